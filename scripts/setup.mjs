@@ -1,0 +1,119 @@
+#!/usr/bin/env node
+// Everything `npm start` and `npm test` need on a fresh Debian/Ubuntu machine,
+// each step skipped when already done:
+//   1. Debian packages (through sudo when not root)
+//   2. npm dependencies
+//   3. CGAL's sample meshes extracted from Debian's data set into public/
+//   4. the WASM module (CMake + Emscripten; rebuilt only when sources changed)
+//   5. the native core and its tests (with --native)
+// Usage: node scripts/setup.mjs [--wasm-only] [--native]
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, statSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const args = new Set(process.argv.slice(2));
+
+const DEBIAN_PACKAGES = [
+  'emscripten', 'libcgal-dev', 'libboost-dev', 'libgtest-dev',
+  'cmake', 'g++', 'make', 'chromium', 'libcgal-demo',
+];
+
+function log(message) {
+  console.log(`[setup] ${message}`);
+}
+
+function run(cmd, cmdArgs, options = {}) {
+  const result = spawnSync(cmd, cmdArgs, { stdio: 'inherit', cwd: root, ...options });
+  if (result.status !== 0) {
+    throw new Error(`${cmd} ${cmdArgs.join(' ')} failed with status ${result.status}`);
+  }
+}
+
+function missingDebianPackages() {
+  return DEBIAN_PACKAGES.filter((name) => {
+    const r = spawnSync('dpkg-query', ['-W', '-f=${Status}', name], { encoding: 'utf8' });
+    return r.status !== 0 || !r.stdout.includes('install ok installed');
+  });
+}
+
+function installDebianPackages() {
+  const missing = missingDebianPackages();
+  if (missing.length === 0) return;
+  const asRoot = process.getuid?.() === 0;
+  log(`installing Debian packages: ${missing.join(' ')}`);
+  const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
+  const apt = (aptArgs) =>
+    asRoot ? run('apt-get', aptArgs, { env }) : run('sudo', ['-E', 'apt-get', ...aptArgs], { env });
+  apt(['update', '-q']);
+  apt(['install', '-y', '-q', '--no-install-recommends', ...missing]);
+}
+
+function installNpmDependencies() {
+  const stamp = join(root, 'node_modules', '.package-lock.json');
+  const lock = join(root, 'package-lock.json');
+  if (existsSync(stamp) && statSync(stamp).mtimeMs >= statSync(lock).mtimeMs) return;
+  log('installing npm dependencies');
+  run('npm', ['ci', '--no-audit', '--no-fund']);
+}
+
+function extractCgalMeshes() {
+  const names = ['mannequin-devil.off', 'elephant.off', 'bunny00.off', 'fandisk.off',
+    'cube_quad.off', 'holes.off', 'torus_quad.off'];
+  const outDir = join(root, 'public', 'meshes', 'cgal');
+  if (names.every((n) => existsSync(join(outDir, n)))) return;
+  const archive = ['/usr/share/doc/libcgal-demo/data.tar.gz', '/usr/share/doc/libcgal-dev/data.tar.gz']
+    .find((p) => existsSync(p));
+  if (!archive) throw new Error('CGAL data set not found: install Debian package libcgal-demo');
+  log(`extracting CGAL sample meshes from ${archive}`);
+  mkdirSync(outDir, { recursive: true });
+  run('tar', ['-xzf', archive, '-C', outDir, '--strip-components=2',
+    ...names.map((n) => `data/meshes/${n}`)]);
+}
+
+function cmakeBuild(buildDir, configure) {
+  if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
+    mkdirSync(buildDir, { recursive: true });
+    run(configure[0], configure.slice(1));
+  }
+  run('cmake', ['--build', buildDir, '--parallel', '2']);
+}
+
+function buildWasm() {
+  const buildDir = join(root, 'build', 'wasm');
+  const env = { ...process.env, NODE_PATH: '/usr/share/nodejs' };
+  // Debian's emcc runs its JS optimizer with the system node modules (acorn).
+  const configure = ['emcmake', 'cmake', '-S', 'wasm', '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release'];
+  if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
+    mkdirSync(buildDir, { recursive: true });
+    run(configure[0], configure.slice(1), { env });
+  }
+  log('building the WASM module (no-op when sources are unchanged)');
+  run('cmake', ['--build', buildDir, '--parallel', '2'], { env });
+}
+
+function buildNative() {
+  const buildDir = join(root, 'build', 'native');
+  log('building the native core, tests and benchmark');
+  cmakeBuild(buildDir, ['cmake', '-S', 'wasm', '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']);
+}
+
+function buildCli() {
+  log('bundling the subdiv CLI');
+  run(join(root, 'node_modules', '.bin', 'vite'), ['build', '--config', 'vite.cli.config.ts', '--logLevel', 'warn']);
+}
+
+try {
+  installDebianPackages();
+  if (!args.has('--wasm-only')) {
+    installNpmDependencies();
+    extractCgalMeshes();
+  }
+  buildWasm();
+  if (args.has('--native')) buildNative();
+  if (!args.has('--wasm-only') && existsSync(join(root, 'vite.cli.config.ts'))) buildCli();
+} catch (error) {
+  console.error(`[setup] ${error.message}`);
+  process.exit(1);
+}

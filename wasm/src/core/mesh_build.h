@@ -1,0 +1,20 @@
+// Conversion between Mesh_buffers and CGAL::Surface_mesh, with the checks
+// that make a buffer a mesh the schemes can work on. Owner: mesh_build.cpp.
+#pragma once
+
+#include "mesh_types.h"
+
+namespace subdivlab {
+
+/// Checks the buffers (indices in range, faces of 3+ distinct vertices,
+/// finite coordinates, at least one face, every edge used by at most two
+/// faces and in opposite directions, manifold vertices) and builds `out`.
+/// On failure `out` is left empty and the status names the first problem
+/// (face number, vertex numbers, 0-based as in the buffers).
+Status build_mesh(const Mesh_buffers& in, Mesh& out);
+
+/// Buffers of a Surface_mesh; vertices renumbered 0..n-1 in iteration order,
+/// faces in iteration order. Control edges are not filled in here.
+Mesh_buffers to_buffers(const Mesh& mesh);
+
+}  // namespace subdivlab

@@ -1,0 +1,24 @@
+// Reading and writing OFF and OBJ text. Owner: mesh_io.cpp.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "mesh_types.h"
+
+namespace subdivlab {
+
+enum class Mesh_format { off, obj };
+
+/// Parses OFF (OFF, COFF, NOFF, CNOFF, STOFF ... variants, comments, colours)
+/// or OBJ text into buffers, then checks that the result is a valid oriented
+/// 2-manifold polygon mesh (see build_mesh). Never throws; never allocates
+/// more than the data in `text` backs, whatever counts a header declares.
+/// Errors name the problem and, where it applies, the 1-based line.
+Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format);
+
+/// OFF / OBJ text of the mesh. Coordinates are written with 17 significant
+/// digits so that reading the text back gives the same doubles.
+std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format);
+
+}  // namespace subdivlab

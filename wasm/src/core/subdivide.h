@@ -1,0 +1,50 @@
+// The subdivision schemes. Owner: subdivide.cpp (+ the host/mask headers).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh_types.h"
+
+namespace subdivlab {
+
+struct Subdivide_options {
+  /// "catmull-clark", "loop", "doo-sabin", "sqrt3" (issue 4 adds
+  /// "quad-triangle", "linear", "linear-tri", "custom").
+  std::string scheme = "catmull-clark";
+  int levels = 1;  ///< 0 = no change (the mesh is still checked)
+  /// Level of the input mesh in the caller's history. √3 refines the border
+  /// only on odd steps; carrying the level makes k single steps equal one
+  /// call of k levels.
+  int start_level = 0;
+  bool triangulate = false;  ///< triangulate first when the scheme needs it
+  /// Memory the result may take; a step predicted to need more fails with
+  /// Status_code::too_large before anything is allocated. 0 = default
+  /// (3.5 GB under WebAssembly's 4 GB, unlimited natively).
+  std::size_t memory_limit_bytes = 0;
+};
+
+/// Counts predicted for a mesh after `levels` steps of a scheme, and the
+/// peak bytes the last step needs (CGAL's hosts reserve more than they keep).
+struct Size_prediction {
+  std::size_t vertices = 0, edges = 0, faces = 0;
+  std::size_t peak_bytes = 0;
+};
+
+/// Predicts counts without subdividing. Fails for unknown schemes.
+Result<Size_prediction> predict_size(const Mesh_buffers& mesh,
+                                     const Subdivide_options& options);
+
+/// Subdivides `mesh` `options.levels` times. Preconditions checked first:
+/// a valid mesh (build_mesh), a known scheme, levels >= 0, triangles for
+/// loop and sqrt3 unless options.triangulate, and the predicted size under
+/// the memory limit. Never throws: CGAL failures become internal_error.
+Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& mesh,
+                                    const Subdivide_options& options);
+
+/// Scheme names known to subdivide_mesh, in display order.
+std::vector<std::string> scheme_names();
+
+}  // namespace subdivlab

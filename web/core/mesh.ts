@@ -1,0 +1,67 @@
+/**
+ * The one mesh type that crosses between the WASM core, the worker and the
+ * viewer: flat typed arrays owned by JS (copied out of the WASM heap once).
+ * Face f uses faceIndices[o .. o + faceSizes[f]) where o = sum of earlier sizes.
+ */
+export interface Mesh {
+  /** x0 y0 z0 x1 y1 z1 ... */
+  positions: Float64Array;
+  /** Degree of each face; polygons stay polygons. */
+  faceSizes: Uint32Array;
+  /** Vertex indices, face by face. */
+  faceIndices: Uint32Array;
+  /** Control-mesh edges kept on this mesh, as vertex index pairs (issue 4); may be empty. */
+  controlEdges: Uint32Array;
+}
+
+export type MeshFormat = 'off' | 'obj';
+
+export type SchemeName = 'catmull-clark' | 'loop' | 'doo-sabin' | 'sqrt3';
+
+export interface SubdivideOptions {
+  scheme: SchemeName;
+  /** Number of steps; 0 checks the mesh and returns it unchanged. */
+  levels: number;
+  /** Level of the input in the caller's history (√3 border parity). Default 0. */
+  startLevel?: number;
+  /** Triangulate first when the scheme needs triangles. Default false. */
+  triangulate?: boolean;
+  /** Memory the result may take, in bytes; 0/undefined = the module's default. */
+  memoryLimitBytes?: number;
+}
+
+export interface SizePrediction {
+  vertices: number;
+  edges: number;
+  faces: number;
+  /** Peak bytes the last step needs in the WASM heap. */
+  peakBytes: number;
+}
+
+export interface MeshFacts {
+  vertices: number;
+  edges: number;
+  faces: number;
+  components: number;
+  boundaries: number;
+  eulerCharacteristic: number;
+  genus: number;
+  closed: boolean;
+  triangles: number;
+  quads: number;
+  otherFaces: number;
+  bboxMin: [number, number, number];
+  bboxMax: [number, number, number];
+  controlEdges: number;
+}
+
+/** What the GPU draws: positions as float32, polygons fanned into triangles, and polygon edges. */
+export interface RenderBuffers {
+  positions: Float32Array;
+  /** Triangle vertex indices (3 per triangle). */
+  triangles: Uint32Array;
+  /** Unique polygon edges as vertex index pairs (quads stay quads: no diagonals). */
+  edges: Uint32Array;
+  /** For each triangle, the polygon (face) it came from. */
+  triangleFace: Uint32Array;
+}
