@@ -1,0 +1,356 @@
+// Mesh_buffers <-> Surface_mesh, and the checks that keep
+// Surface_mesh::add_face from ever seeing a face it would refuse.
+//
+// Isolated vertices (used by no face) are dropped when a mesh is built and
+// the others renumbered in their original order, so the facts count what the
+// surface has and an index stays valid for every vertex before the first
+// dropped one. read_mesh drops them too, so its buffers match the mesh.
+
+#include "mesh_build.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "mesh_check.h"
+
+namespace subdivlab {
+namespace detail {
+namespace {
+
+constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+/// Words for faces and vertices in messages, per Check_naming.
+class Namer {
+ public:
+  explicit Namer(const Check_naming& n) : n_(n) {}
+
+  bool by_line() const { return n_.face_lines != nullptr; }
+  int line(std::size_t f) const {
+    return by_line() && f < n_.face_lines->size() ? (*n_.face_lines)[f] : 0;
+  }
+  std::string vertex(std::uint64_t v) const {
+    return std::to_string(v + n_.vertex_offset);
+  }
+  /// "face 3" for buffers; "the face on line 9" for files.
+  std::string face(std::size_t f) const {
+    if (by_line()) return "the face on line " + std::to_string(line(f));
+    return "face " + std::to_string(f);
+  }
+  /// "faces 3, 4 and 7" or "the faces on lines 9, 10 and 14".
+  std::string faces(const std::vector<std::size_t>& fs) const {
+    std::string s = by_line() ? "the faces on lines " : "faces ";
+    for (std::size_t i = 0; i < fs.size(); ++i) {
+      if (i > 0) s += (i + 1 == fs.size()) ? " and " : ", ";
+      s += std::to_string(by_line() ? line(fs[i]) : fs[i]);
+    }
+    return s;
+  }
+  /// Prefix "line N: " for problems found at face f of a file.
+  std::string where(std::size_t f) const {
+    return by_line() ? "line " + std::to_string(line(f)) + ": " : "";
+  }
+  Check_result fail(std::size_t f, const std::string& what) const {
+    Check_result r;
+    r.status = Status::error(Status_code::invalid_mesh, where(f) + what,
+                             f == npos ? 0 : line(f));
+    r.face = f;
+    return r;
+  }
+
+ private:
+  const Check_naming& n_;
+};
+
+Check_result fail_plain(Status_code c, const std::string& what) {
+  Check_result r;
+  r.status = Status::error(c, what);
+  return r;
+}
+
+struct Union_find {
+  std::vector<std::uint32_t> parent;
+  explicit Union_find(std::size_t n) : parent(n) {
+    std::iota(parent.begin(), parent.end(), 0u);
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+/// One side of an edge: face corner `corner` (index into face_indices) goes
+/// from vertex `from` to the next vertex of its face.
+struct Half_edge {
+  std::uint64_t key;  // min(a,b) << 32 | max(a,b)
+  std::uint32_t corner;
+};
+
+}  // namespace
+
+Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
+  const Namer name(naming);
+  const auto& sizes = in.face_sizes;
+  const auto& idx = in.face_indices;
+
+  if (sizes.empty()) return fail_plain(Status_code::invalid_mesh, "the mesh has no faces");
+  if (in.positions.size() % 3 != 0) {
+    return fail_plain(Status_code::invalid_mesh,
+                      "positions hold " + std::to_string(in.positions.size()) +
+                          " numbers, not a multiple of 3");
+  }
+  std::uint64_t total = 0;
+  for (auto s : sizes) total += s;
+  if (total != idx.size()) {
+    return fail_plain(Status_code::invalid_mesh,
+                      "face sizes add up to " + std::to_string(total) +
+                          " indices but there are " + std::to_string(idx.size()));
+  }
+  if (idx.size() >= 0xffffffffu) {
+    return fail_plain(Status_code::too_large, "the mesh has too many face corners");
+  }
+
+  const std::size_t nv = in.vertex_count();
+  for (std::size_t i = 0; i < in.positions.size(); ++i) {
+    if (!std::isfinite(in.positions[i])) {
+      return fail_plain(Status_code::invalid_mesh,
+                        "vertex " + name.vertex(i / 3) + " has a non-finite coordinate");
+    }
+  }
+
+  // Per-face checks, first failing face wins.
+  std::vector<std::uint32_t> offset(sizes.size());
+  {
+    std::vector<std::uint32_t> scratch;
+    std::uint32_t o = 0;
+    for (std::size_t f = 0; f < sizes.size(); ++f) {
+      offset[f] = o;
+      const std::uint32_t k = sizes[f];
+      if (k < 3) {
+        return name.fail(f, (name.by_line() ? std::string("the face") : name.face(f)) +
+                                " has " + std::to_string(k) +
+                                (k == 1 ? " vertex" : " vertices") +
+                                "; a face needs at least 3");
+      }
+      for (std::uint32_t c = o; c < o + k; ++c) {
+        if (idx[c] >= nv) {
+          return name.fail(
+              f, (name.by_line() ? std::string("face index ") : name.face(f) + ": vertex index ") +
+                     name.vertex(idx[c]) + " is out of range (" + std::to_string(nv) +
+                     " vertices)");
+        }
+      }
+      scratch.assign(idx.begin() + o, idx.begin() + o + k);
+      std::sort(scratch.begin(), scratch.end());
+      auto dup = std::adjacent_find(scratch.begin(), scratch.end());
+      if (dup != scratch.end()) {
+        return name.fail(f, (name.by_line() ? std::string("the face") : name.face(f)) +
+                                " uses vertex " + name.vertex(*dup) + " more than once");
+      }
+      o += k;
+    }
+  }
+  std::vector<std::uint32_t> face_of(idx.size());
+  for (std::size_t f = 0; f < sizes.size(); ++f) {
+    std::fill(face_of.begin() + offset[f], face_of.begin() + offset[f] + sizes[f],
+              static_cast<std::uint32_t>(f));
+  }
+  auto next_corner = [&](std::uint32_t c) {
+    const std::uint32_t f = face_of[c];
+    return c + 1 < offset[f] + sizes[f] ? c + 1 : offset[f];
+  };
+
+  // Edges: group the half-edges by undirected edge, in corner order.
+  std::vector<Half_edge> he(idx.size());
+  for (std::uint32_t c = 0; c < idx.size(); ++c) {
+    const std::uint64_t a = idx[c], b = idx[next_corner(c)];
+    he[c] = {(std::min(a, b) << 32) | std::max(a, b), c};
+  }
+  std::sort(he.begin(), he.end(), [](const Half_edge& x, const Half_edge& y) {
+    return x.key != y.key ? x.key < y.key : x.corner < y.corner;
+  });
+
+  // An edge of 3+ faces, reported where its third face appears.
+  std::size_t best = npos, best_begin = 0, best_end = 0;
+  for (std::size_t i = 0; i < he.size();) {
+    std::size_t j = i;
+    while (j < he.size() && he[j].key == he[i].key) ++j;
+    if (j - i > 2 && (best == npos || he[i + 2].corner < best)) {
+      best = he[i + 2].corner;
+      best_begin = i;
+      best_end = j;
+    }
+    i = j;
+  }
+  if (best != npos) {
+    std::vector<std::size_t> fs;
+    for (std::size_t i = best_begin; i < best_end; ++i) fs.push_back(face_of[he[i].corner]);
+    const std::uint64_t key = he[best_begin].key;
+    return name.fail(face_of[best],
+                     "non-manifold edge between vertices " + name.vertex(key >> 32) +
+                         " and " + name.vertex(key & 0xffffffffu) + ": used by " +
+                         std::to_string(fs.size()) + " faces (" + name.faces(fs) + ")");
+  }
+
+  // An edge used twice in the same direction, reported at its second face.
+  best = npos;
+  std::size_t first_corner = 0;
+  for (std::size_t i = 0; i + 1 < he.size(); ++i) {
+    if (he[i].key != he[i + 1].key) continue;
+    const std::uint32_t c1 = he[i].corner, c2 = he[i + 1].corner;
+    if (idx[c1] == idx[c2] && (best == npos || c2 < best)) {
+      best = c2;
+      first_corner = c1;
+    }
+  }
+  if (best != npos) {
+    const std::uint32_t c1 = static_cast<std::uint32_t>(first_corner);
+    const std::uint32_t c2 = static_cast<std::uint32_t>(best);
+    return name.fail(face_of[c2],
+                     "inconsistent orientation: " +
+                         name.faces({face_of[c1], face_of[c2]}) + " both use edge " +
+                         name.vertex(idx[c1]) + "\u2192" + name.vertex(idx[next_corner(c1)]) +
+                         " in the same direction");
+  }
+
+  // Vertices: corners around a vertex joined across shared edges must form
+  // one fan; two fans meeting only at the vertex make it non-manifold.
+  Union_find uf(idx.size());
+  for (std::size_t i = 0; i + 1 < he.size(); ++i) {
+    if (he[i].key != he[i + 1].key) continue;
+    const std::uint32_t c1 = he[i].corner, c2 = he[i + 1].corner;  // a→b, b→a
+    uf.unite(c1, next_corner(c2));
+    uf.unite(next_corner(c1), c2);
+  }
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  for (auto v : idx) ++start[v + 1];
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> corners(idx.size());
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::uint32_t c = 0; c < idx.size(); ++c) corners[fill[idx[c]]++] = c;
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::uint32_t b = start[v], e = start[v + 1];
+    if (e - b < 2) continue;
+    const std::uint32_t root = uf.find(corners[b]);  // fan of the first corner
+    std::vector<std::uint32_t> roots;
+    std::uint32_t other = 0xffffffffu;  // first corner in another fan
+    for (std::uint32_t i = b; i < e; ++i) {
+      const std::uint32_t r = uf.find(corners[i]);
+      roots.push_back(r);
+      if (r != root && other == 0xffffffffu) other = corners[i];
+    }
+    if (other == 0xffffffffu) continue;
+    std::sort(roots.begin(), roots.end());
+    const auto fans = std::unique(roots.begin(), roots.end()) - roots.begin();
+    return name.fail(face_of[other],
+                     "non-manifold vertex " + name.vertex(v) + ": its faces form " +
+                         std::to_string(fans) +
+                         " separate fans that meet only at this vertex (" +
+                         name.faces({face_of[corners[b]], face_of[other]}) + ")");
+  }
+  return {};
+}
+
+Mesh_buffers drop_isolated_vertices(const Mesh_buffers& in) {
+  const std::size_t nv = in.vertex_count();
+  std::vector<std::uint32_t> map(nv, 0xffffffffu);
+  for (auto v : in.face_indices) map[v] = 0;
+  std::uint32_t n = 0;
+  for (auto& m : map) {
+    if (m == 0) m = n++;
+  }
+  if (n == nv) return in;
+  Mesh_buffers out;
+  out.positions.reserve(3 * std::size_t(n));
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (map[v] == 0xffffffffu) continue;
+    out.positions.insert(out.positions.end(), in.positions.begin() + 3 * v,
+                         in.positions.begin() + 3 * v + 3);
+  }
+  out.face_sizes = in.face_sizes;
+  out.face_indices.reserve(in.face_indices.size());
+  for (auto v : in.face_indices) out.face_indices.push_back(map[v]);
+  for (std::size_t i = 0; i + 1 < in.control_edges.size(); i += 2) {
+    const auto a = in.control_edges[i], b = in.control_edges[i + 1];
+    if (a >= nv || b >= nv || map[a] == 0xffffffffu || map[b] == 0xffffffffu) continue;
+    out.control_edges.push_back(map[a]);
+    out.control_edges.push_back(map[b]);
+  }
+  return out;
+}
+
+}  // namespace detail
+
+Status build_mesh(const Mesh_buffers& in, Mesh& out) {
+  out.clear();
+  const detail::Check_result check = detail::check_buffers(in);
+  if (!check.status.ok()) return check.status;
+
+  const std::size_t nv = in.vertex_count();
+  std::vector<Mesh::Vertex_index> vmap(nv);
+  std::vector<bool> used(nv, false);
+  for (auto v : in.face_indices) used[v] = true;
+  const std::size_t n_used = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
+  // Every corner is one halfedge; a closed mesh has corners/2 edges, an open
+  // one a little more, and reserve only needs to be close.
+  out.reserve(n_used, in.face_indices.size() / 2 + 1, in.face_count());
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!used[v]) continue;
+    const double* p = &in.positions[3 * v];
+    vmap[v] = out.add_vertex(Point(p[0], p[1], p[2]));
+  }
+  std::vector<Mesh::Vertex_index> face;
+  std::size_t o = 0;
+  for (std::size_t f = 0; f < in.face_count(); ++f) {
+    face.clear();
+    for (std::uint32_t i = 0; i < in.face_sizes[f]; ++i) face.push_back(vmap[in.face_indices[o + i]]);
+    o += in.face_sizes[f];
+    if (out.add_face(face) == Mesh::null_face()) {
+      // The checks above should make this unreachable; say so if it is not.
+      out.clear();
+      return Status::error(Status_code::internal_error,
+                           "face " + std::to_string(f) +
+                               " passed the mesh checks but the halfedge structure refused it");
+    }
+  }
+  return Status::success();
+}
+
+Mesh_buffers to_buffers(const Mesh& mesh) {
+  Mesh_buffers out;
+  std::vector<std::uint32_t> number(mesh.num_vertices(), 0xffffffffu);
+  out.positions.reserve(3 * mesh.number_of_vertices());
+  std::uint32_t n = 0;
+  for (Mesh::Vertex_index v : mesh.vertices()) {
+    number[v.idx()] = n++;
+    const Point& p = mesh.point(v);
+    out.positions.push_back(p.x());
+    out.positions.push_back(p.y());
+    out.positions.push_back(p.z());
+  }
+  out.face_sizes.reserve(mesh.number_of_faces());
+  out.face_indices.reserve(mesh.number_of_halfedges() / 2 + mesh.number_of_faces());
+  for (Mesh::Face_index f : mesh.faces()) {
+    std::uint32_t k = 0;
+    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      out.face_indices.push_back(number[v.idx()]);
+      ++k;
+    }
+    out.face_sizes.push_back(k);
+  }
+  return out;
+}
+
+}  // namespace subdivlab

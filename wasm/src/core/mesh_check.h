@@ -1,0 +1,44 @@
+// Validation of Mesh_buffers shared by build_mesh and read_mesh, so that a
+// buffer from JS and a file from disk fail with the same words. Internal to
+// the core (mesh_build.cpp, mesh_io.cpp); not part of the public API.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mesh_types.h"
+
+namespace subdivlab::detail {
+
+/// How to name things in messages. Buffers name faces by their 0-based
+/// number; files name them by the 1-based line they were read from and
+/// number vertices as the file does (OBJ counts from 1).
+struct Check_naming {
+  /// Line of each face in the source text; empty for buffers.
+  const std::vector<int>* face_lines = nullptr;
+  /// Added to vertex numbers in messages (1 for OBJ).
+  std::uint32_t vertex_offset = 0;
+};
+
+/// The first problem found, or ok. `line` is set from `face_lines` for
+/// problems that belong to a face; `face` is that face, or npos.
+struct Check_result {
+  Status status;
+  std::size_t face = static_cast<std::size_t>(-1);
+};
+
+/// Checks, in this order: at least one face, consistent array sizes,
+/// finite coordinates, per face (in face order) at least 3 vertices,
+/// indices in range and no repeated vertex, then edges used by at most two
+/// faces, edges used in opposite directions, and vertices whose faces form a
+/// single fan. Isolated vertices are not an error (build_mesh drops them).
+Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming = {});
+
+/// Copy of `in` without the vertices no face uses; the others keep their
+/// relative order. Returns `in` unchanged (as a copy) when all are used.
+/// Precondition: check_buffers(in) succeeded. control_edges are remapped and
+/// pairs touching a dropped vertex are removed.
+Mesh_buffers drop_isolated_vertices(const Mesh_buffers& in);
+
+}  // namespace subdivlab::detail
