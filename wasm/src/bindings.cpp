@@ -1,0 +1,285 @@
+// The only file that knows Emscripten: converts between JS values and the
+// core's types, and catches everything so that no C++ exception (CGAL
+// precondition failures included) ever crosses into JS and kills the
+// instance. Every export returns a plain object:
+//   { ok: true, ... }  or  { ok: false, code, message, line }.
+// Mesh arrays leave the heap as copies (memory growth detaches any view).
+#include <emscripten/bind.h>
+#include <emscripten/heap.h>
+#include <emscripten/val.h>
+#include <malloc.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "core/mesh_facts.h"
+#include "core/mesh_io.h"
+#include "core/mesh_types.h"
+#include "core/subdivide.h"
+
+using emscripten::val;
+
+namespace subdivlab {
+namespace {
+
+/// Heap kept free beyond a step's predicted peak: the JS copies of the
+/// result are made while the result is still in the heap, and dlmalloc's
+/// free space is fragmented.
+constexpr std::size_t heap_safety_margin = std::size_t{256} << 20;
+
+val to_js_status(const Status& status) {
+  val out = val::object();
+  out.set("ok", false);
+  out.set("code", std::string(status_code_name(status.code)));
+  out.set("message", status.message);
+  out.set("line", status.line);
+  return out;
+}
+
+val ok_object() {
+  val out = val::object();
+  out.set("ok", true);
+  return out;
+}
+
+template <class T>
+val to_js_array(const char* type, const std::vector<T>& values) {
+  // `new T(view)` copies: the JS array owns its bytes.
+  return val::global(type).new_(
+      emscripten::typed_memory_view(values.size(), values.data()));
+}
+
+val to_js_mesh(const Mesh_buffers& mesh) {
+  val out = val::object();
+  out.set("positions", to_js_array("Float64Array", mesh.positions));
+  out.set("faceSizes", to_js_array("Uint32Array", mesh.face_sizes));
+  out.set("faceIndices", to_js_array("Uint32Array", mesh.face_indices));
+  out.set("controlEdges", to_js_array("Uint32Array", mesh.control_edges));
+  return out;
+}
+
+template <class T>
+std::vector<T> from_js_array(const val& mesh, const char* key) {
+  const val array = mesh[key];
+  if (array.isUndefined() || array.isNull()) return {};
+  return emscripten::convertJSArrayToNumberVector<T>(array);
+}
+
+Mesh_buffers from_js_mesh(const val& mesh) {
+  Mesh_buffers out;
+  out.positions = from_js_array<double>(mesh, "positions");
+  out.face_sizes = from_js_array<std::uint32_t>(mesh, "faceSizes");
+  out.face_indices = from_js_array<std::uint32_t>(mesh, "faceIndices");
+  out.control_edges = from_js_array<std::uint32_t>(mesh, "controlEdges");
+  return out;
+}
+
+bool parse_format(const std::string& name, Mesh_format& format) {
+  if (name == "off") {
+    format = Mesh_format::off;
+  } else if (name == "obj") {
+    format = Mesh_format::obj;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+Status unknown_format(const std::string& name) {
+  return Status::error(Status_code::invalid_argument,
+                       "Unknown mesh format \"" + name +
+                           "\"; expected \"off\" or \"obj\".");
+}
+
+/// Bytes the heap can still give: the address space left to grow into plus
+/// nothing for the free chunks inside it (kept as slack), minus a margin.
+std::size_t available_heap_bytes() {
+  const struct mallinfo info = mallinfo();
+  const std::size_t in_use = static_cast<unsigned int>(info.uordblks);
+  const std::size_t max = emscripten_get_heap_max();
+  const std::size_t used = in_use + heap_safety_margin;
+  return used < max ? max - used : 1;
+}
+
+/// Reads { scheme, levels, startLevel, triangulate, memoryLimitBytes }.
+Status from_js_options(const val& js, Subdivide_options& options) {
+  if (!js.isUndefined() && !js.isNull()) {
+    const val scheme = js["scheme"];
+    if (scheme.isString()) options.scheme = scheme.as<std::string>();
+    else if (!scheme.isUndefined())
+      return Status::error(Status_code::invalid_argument,
+                           "Option scheme must be a string.");
+    const auto read_int = [&js](const char* key, int& value) {
+      const val v = js[key];
+      if (v.isUndefined()) return true;
+      if (!v.isNumber()) return false;
+      const double d = v.as<double>();
+      if (d != static_cast<double>(static_cast<long long>(d)) || d < -1e9 ||
+          d > 1e9)
+        return false;
+      value = static_cast<int>(d);
+      return true;
+    };
+    if (!read_int("levels", options.levels))
+      return Status::error(Status_code::invalid_argument,
+                           "Option levels must be an integer.");
+    if (!read_int("startLevel", options.start_level))
+      return Status::error(Status_code::invalid_argument,
+                           "Option startLevel must be an integer.");
+    const val triangulate = js["triangulate"];
+    if (!triangulate.isUndefined()) options.triangulate = triangulate.as<bool>();
+    const val limit = js["memoryLimitBytes"];
+    if (limit.isNumber() && limit.as<double>() > 0)
+      options.memory_limit_bytes = static_cast<std::size_t>(
+          std::min(limit.as<double>(), 1.8e19));
+  }
+  const std::size_t available = available_heap_bytes();
+  if (options.memory_limit_bytes == 0 || options.memory_limit_bytes > available)
+    options.memory_limit_bytes = available;
+  return Status::success();
+}
+
+/// Runs `body`, turning anything thrown into an internal_error object.
+template <class Body>
+val guarded(Body body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return to_js_status(Status::error(
+        Status_code::too_large,
+        "Out of memory: the WebAssembly heap could not grow any further."));
+  } catch (const std::exception& e) {
+    return to_js_status(Status::error(
+        Status_code::internal_error, std::string("Internal error: ") + e.what()));
+  } catch (...) {
+    return to_js_status(Status::error(Status_code::internal_error,
+                                      "Internal error: unknown exception."));
+  }
+}
+
+val js_read_mesh(const std::string& text, const std::string& format_name) {
+  return guarded([&] {
+    Mesh_format format;
+    if (!parse_format(format_name, format))
+      return to_js_status(unknown_format(format_name));
+    const Result<Mesh_buffers> result = read_mesh(text, format);
+    if (!result.ok()) return to_js_status(result.status);
+    val out = ok_object();
+    out.set("mesh", to_js_mesh(result.value));
+    return out;
+  });
+}
+
+val js_write_mesh(const val& mesh, const std::string& format_name) {
+  return guarded([&] {
+    Mesh_format format;
+    if (!parse_format(format_name, format))
+      return to_js_status(unknown_format(format_name));
+    val out = ok_object();
+    out.set("text", write_mesh(from_js_mesh(mesh), format));
+    return out;
+  });
+}
+
+val js_subdivide(const val& mesh, const val& js_options) {
+  return guarded([&] {
+    const Mesh_buffers in = from_js_mesh(mesh);
+    Subdivide_options options;
+    const Status status = from_js_options(js_options, options);
+    if (!status.ok()) return to_js_status(status);
+    const Result<Mesh_buffers> result = subdivide_mesh(in, options);
+    if (!result.ok()) return to_js_status(result.status);
+    val out = ok_object();
+    out.set("mesh", to_js_mesh(result.value));
+    return out;
+  });
+}
+
+val js_predict_size(const val& mesh, const val& js_options) {
+  return guarded([&] {
+    const Mesh_buffers in = from_js_mesh(mesh);
+    Subdivide_options options;
+    const Status status = from_js_options(js_options, options);
+    if (!status.ok()) return to_js_status(status);
+    const Result<Size_prediction> result = predict_size(in, options);
+    if (!result.ok()) return to_js_status(result.status);
+    val prediction = val::object();
+    prediction.set("vertices", static_cast<double>(result.value.vertices));
+    prediction.set("edges", static_cast<double>(result.value.edges));
+    prediction.set("faces", static_cast<double>(result.value.faces));
+    prediction.set("peakBytes", static_cast<double>(result.value.peak_bytes));
+    prediction.set("memoryLimitBytes",
+                   static_cast<double>(options.memory_limit_bytes));
+    val out = ok_object();
+    out.set("prediction", prediction);
+    return out;
+  });
+}
+
+val to_js_point(const std::array<double, 3>& p) {
+  val out = val::array();
+  for (double c : p) out.call<void>("push", c);
+  return out;
+}
+
+val js_facts(const val& mesh) {
+  return guarded([&] {
+    const Result<Mesh_facts> result = compute_facts(from_js_mesh(mesh));
+    if (!result.ok()) return to_js_status(result.status);
+    const Mesh_facts& f = result.value;
+    val facts = val::object();
+    facts.set("vertices", static_cast<double>(f.vertices));
+    facts.set("edges", static_cast<double>(f.edges));
+    facts.set("faces", static_cast<double>(f.faces));
+    facts.set("components", static_cast<double>(f.components));
+    facts.set("boundaries", static_cast<double>(f.boundaries));
+    facts.set("eulerCharacteristic",
+              static_cast<double>(f.euler_characteristic));
+    facts.set("genus", static_cast<double>(f.genus));
+    facts.set("closed", f.closed);
+    facts.set("triangles", static_cast<double>(f.triangles));
+    facts.set("quads", static_cast<double>(f.quads));
+    facts.set("otherFaces", static_cast<double>(f.other_faces));
+    facts.set("bboxMin", to_js_point(f.bbox_min));
+    facts.set("bboxMax", to_js_point(f.bbox_max));
+    facts.set("controlEdges", static_cast<double>(f.control_edges));
+    val out = ok_object();
+    out.set("facts", facts);
+    return out;
+  });
+}
+
+val js_scheme_names() {
+  return guarded([] {
+    val names = val::array();
+    for (const std::string& name : scheme_names())
+      names.call<void>("push", name);
+    val out = ok_object();
+    out.set("names", names);
+    return out;
+  });
+}
+
+/// Bytes in use in the heap, for leak checks in the tests.
+double js_heap_in_use() {
+  return static_cast<double>(static_cast<unsigned int>(mallinfo().uordblks));
+}
+
+}  // namespace
+}  // namespace subdivlab
+
+EMSCRIPTEN_BINDINGS(subdivlab) {
+  emscripten::function("read_mesh", &subdivlab::js_read_mesh);
+  emscripten::function("write_mesh", &subdivlab::js_write_mesh);
+  emscripten::function("subdivide", &subdivlab::js_subdivide);
+  emscripten::function("predict_size", &subdivlab::js_predict_size);
+  emscripten::function("facts", &subdivlab::js_facts);
+  emscripten::function("scheme_names", &subdivlab::js_scheme_names);
+  emscripten::function("heap_in_use", &subdivlab::js_heap_in_use);
+}
