@@ -1,0 +1,29 @@
+/**
+ * Node entry to the core (CLI, vitest): reads subdivlab.wasm from disk and
+ * hands the bytes to init(), since Emscripten 3.1.6's web/worker glue would
+ * otherwise fetch it by URL.
+ */
+import { existsSync, readFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { init } from './subdiv-core';
+
+const WASM_NAME = 'subdivlab.wasm';
+
+/** Where the .wasm may be: beside this source file, or from the CLI bundle in build/cli/. */
+function wasmCandidates(): string[] {
+  const here = dirname(fileURLToPath(import.meta.url));
+  return [join(here, 'generated', WASM_NAME), join(here, '..', '..', 'web', 'core', 'generated', WASM_NAME)];
+}
+
+/**
+ * Loads the core in Node. `wasmPath` overrides the search; the module is
+ * built by `node scripts/setup.mjs` (or `npm run build:wasm`).
+ */
+export async function initNode(wasmPath?: string): Promise<void> {
+  const path = wasmPath ?? wasmCandidates().find((p) => existsSync(p));
+  if (!path) {
+    throw new Error(`${WASM_NAME} not found (looked in ${wasmCandidates().join(', ')}); run npm run build:wasm`);
+  }
+  await init({ wasmBinary: readFileSync(path) });
+}

@@ -1,0 +1,126 @@
+/**
+ * The one module that owns the WebAssembly instance of the C++ core.
+ * `init()` once (idempotent), then call the typed, stateless API: meshes go in
+ * and come out as flat typed arrays owned by JS, so nothing needs freeing.
+ * Every failure is thrown as a {@link SubdivError} carrying the core's code,
+ * message and line. Nothing else in the project imports ./generated/.
+ */
+import createSubdivModule from './generated/subdivlab.mjs';
+import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
+import { SubdivError, type SubdivErrorCode } from './subdiv-error';
+
+/** Where the `.wasm` comes from. Without either field the browser fetches the file next to the glue. */
+export interface InitSource {
+  /** The module's bytes (Node: read from disk; see init-node.ts). */
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  /** URL of subdivlab.wasm, when it is served from somewhere else. */
+  wasmUrl?: string;
+}
+
+type RawFailure = { ok: false; code: SubdivErrorCode; message: string; line: number };
+type RawResult<T> = ({ ok: true } & T) | RawFailure;
+
+/** What bindings.cpp registers; every call returns a result object, never throws. */
+interface CoreModule {
+  read_mesh(text: string, format: string): RawResult<{ mesh: Mesh }>;
+  write_mesh(mesh: Mesh, format: string): RawResult<{ text: string }>;
+  subdivide(mesh: Mesh, options: SubdivideOptions): RawResult<{ mesh: Mesh }>;
+  predict_size(mesh: Mesh, options: SubdivideOptions): RawResult<{ prediction: SizePrediction }>;
+  facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
+  scheme_names(): RawResult<{ names: string[] }>;
+  heap_in_use(): number;
+}
+
+let core: CoreModule | null = null;
+let loading: Promise<void> | null = null;
+
+/**
+ * Instantiates the WebAssembly core. Safe to call many times: later calls
+ * wait for the first. A failed load may be retried.
+ */
+export function init(source: InitSource = {}): Promise<void> {
+  if (core) return Promise.resolve();
+  if (!loading) {
+    loading = load(source).catch((error: unknown) => {
+      loading = null;
+      throw error;
+    });
+  }
+  return loading;
+}
+
+async function load(source: InitSource): Promise<void> {
+  const moduleArgs: Record<string, unknown> = {
+    print: () => {},
+    printErr: (text: string) => console.warn(`[subdivlab] ${text}`),
+  };
+  if (source.wasmBinary) {
+    moduleArgs.wasmBinary = source.wasmBinary;
+  } else if (source.wasmUrl) {
+    const url = source.wasmUrl;
+    moduleArgs.locateFile = (path: string) => (path.endsWith('.wasm') ? url : path);
+  }
+  // Otherwise the glue resolves `new URL('subdivlab.wasm', import.meta.url)`,
+  // which Vite rewrites to the emitted asset in dev, builds and workers alike.
+  core = (await createSubdivModule(moduleArgs)) as CoreModule;
+}
+
+/** True once {@link init} has finished. */
+export function isReady(): boolean {
+  return core !== null;
+}
+
+function module(): CoreModule {
+  if (!core) throw new SubdivError('internal_error', 'The SubdivLab core is not loaded yet: await init() first.');
+  return core;
+}
+
+function unwrap<T>(result: RawResult<T>): T {
+  if (!result.ok) throw new SubdivError(result.code, result.message, result.line);
+  return result;
+}
+
+/** Parses OFF or OBJ text into a checked mesh (a valid oriented 2-manifold polygon mesh). */
+export function parseMesh(text: string, format: MeshFormat): Mesh {
+  return unwrap(module().read_mesh(text, format)).mesh;
+}
+
+/** OFF or OBJ text of `mesh`; coordinates round-trip exactly. */
+export function exportMesh(mesh: Mesh, format: MeshFormat): string {
+  return unwrap(module().write_mesh(mesh, format)).text;
+}
+
+/**
+ * A new mesh, `options.levels` steps of `options.scheme` from `mesh` (which is
+ * not changed). Fails with `not_triangles`, `too_large`, `invalid_mesh`, ...
+ * Without `memoryLimitBytes` the limit is what the WebAssembly heap can still take.
+ */
+export function subdivide(mesh: Mesh, options: SubdivideOptions): Mesh {
+  return unwrap(module().subdivide(mesh, options)).mesh;
+}
+
+/** Counts and peak heap bytes predicted for `subdivide(mesh, options)`, without subdividing. */
+export function predictSize(mesh: Mesh, options: SubdivideOptions): SizePrediction {
+  return unwrap(module().predict_size(mesh, options)).prediction;
+}
+
+/** Vertices, edges, faces, components, boundaries, genus, face kinds, bounding box. */
+export function meshFacts(mesh: Mesh): MeshFacts {
+  return unwrap(module().facts(mesh)).facts;
+}
+
+/** Scheme names the core knows, in display order. */
+export function schemeNames(): string[] {
+  return unwrap(module().scheme_names()).names;
+}
+
+/** Bytes allocated in the WebAssembly heap right now (for leak checks). */
+export function heapBytesInUse(): number {
+  return module().heap_in_use();
+}
+
+/** `'off'` or `'obj'` from a file name's extension (any case), otherwise null. */
+export function formatFromFileName(name: string): MeshFormat | null {
+  const match = /\.(off|obj)$/i.exec(name.trim());
+  return match ? (match[1].toLowerCase() as MeshFormat) : null;
+}
