@@ -1,0 +1,87 @@
+import { parseArgs } from 'node:util';
+import type { MeshFormat } from '../core/mesh';
+
+/** The usage text printed by --help and on bad usage. */
+export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|OUTPUT.obj] [--stats]
+
+  INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
+  --scheme S       catmull-clark (default), loop, doo-sabin or sqrt3
+  --levels N       number of subdivision steps, 0 or more (default 1; 0 = load, check, convert)
+  --triangulate    triangulate first when the scheme needs triangles (loop, sqrt3)
+  -o, --output F   write the result to F, as OFF or OBJ by its extension
+  --stats          print the result's facts and the subdivision time as one JSON object
+  -h, --help       show this text
+
+Without -o and --stats the result is written to stdout as OFF.
+Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
+
+/** A command line that made sense. */
+export interface CliArgs {
+  input: string;
+  scheme: string;
+  levels: number;
+  triangulate: boolean;
+  output: { path: string; format: MeshFormat } | null;
+  stats: boolean;
+  help: boolean;
+}
+
+/** Thrown for bad usage: the CLI prints the message and the usage, exit status 2. */
+export class UsageError extends Error {
+  constructor(message: string) {
+    super(message);
+    this.name = 'UsageError';
+  }
+}
+
+function outputFormat(path: string): MeshFormat {
+  const match = /\.(off|obj)$/i.exec(path);
+  if (!match) throw new UsageError(`output file ${path} must end in .off or .obj`);
+  return match[1].toLowerCase() as MeshFormat;
+}
+
+/** Parses argv (without node and the script). Throws UsageError; scheme names are checked later. */
+export function parseCliArgs(argv: string[]): CliArgs {
+  let parsed: ReturnType<typeof parse>;
+  try {
+    parsed = parse(argv);
+  } catch (error) {
+    throw new UsageError(error instanceof Error ? error.message : String(error));
+  }
+  const { values, positionals } = parsed;
+  const help = values.help === true;
+  if (help) {
+    return { input: '', scheme: '', levels: 0, triangulate: false, output: null, stats: false, help };
+  }
+  if (positionals.length !== 1) {
+    throw new UsageError(positionals.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
+  }
+  const levelsText = values.levels ?? '1';
+  if (!/^\d+$/.test(levelsText)) throw new UsageError(`--levels must be an integer 0 or more, not "${levelsText}"`);
+  const levels = Number(levelsText);
+  return {
+    input: positionals[0],
+    scheme: values.scheme ?? 'catmull-clark',
+    levels,
+    triangulate: values.triangulate === true,
+    output: values.output === undefined ? null : { path: values.output, format: outputFormat(values.output) },
+    stats: values.stats === true,
+    help,
+  };
+}
+
+function parse(argv: string[]) {
+  return parseArgs({
+    args: argv,
+    allowPositionals: true,
+    strict: true,
+    options: {
+      scheme: { type: 'string' },
+      levels: { type: 'string' },
+      triangulate: { type: 'boolean' },
+      output: { type: 'string', short: 'o' },
+      stats: { type: 'boolean' },
+      help: { type: 'boolean', short: 'h' },
+    },
+  });
+}

@@ -1,0 +1,126 @@
+/**
+ * The `subdiv` command: load an OFF/OBJ mesh, subdivide it with the WASM core,
+ * write it and/or print its facts. Bundled for Node into build/cli/subdiv.mjs
+ * (vite.cli.config.ts) and started by bin/subdiv.mjs.
+ */
+import { readFileSync, writeFileSync } from 'node:fs';
+import { performance } from 'node:perf_hooks';
+import { initNode } from '../core/init-node';
+import type { Mesh, MeshFormat, SchemeName } from '../core/mesh';
+import { exportMesh, formatFromFileName, meshFacts, parseMesh, schemeNames, subdivide } from '../core/subdiv-core';
+import { SubdivError } from '../core/subdiv-error';
+import { type CliArgs, parseCliArgs, USAGE, UsageError } from './cli-args';
+
+/** Where the CLI writes; replaceable in tests. */
+export interface CliIo {
+  stdout: (text: string) => void;
+  stderr: (text: string) => void;
+}
+
+const processIo: CliIo = {
+  stdout: (text) => process.stdout.write(text),
+  stderr: (text) => process.stderr.write(text),
+};
+
+/** Bad input: reported as one `error:` line, exit status 1. */
+class InputError extends Error {}
+
+/** OFF/OBJ by extension; other names are told apart by an OFF header on the first data line. */
+function inputFormat(path: string, text: string): MeshFormat {
+  const byName = formatFromFileName(path);
+  if (byName) return byName;
+  const firstLine = text
+    .replace(/^\uFEFF/, '')
+    .split(/\r?\n/)
+    .find((line) => line.trim() !== '' && !line.trim().startsWith('#'));
+  return firstLine && /^\s*[A-Z]*OFF\b/.test(firstLine) ? 'off' : 'obj';
+}
+
+function readInput(path: string): string {
+  try {
+    return readFileSync(path, 'utf8');
+  } catch (error) {
+    const reason = (error as NodeJS.ErrnoException).code === 'ENOENT' ? 'no such file' : (error as Error).message;
+    throw new InputError(`${path}: cannot read: ${reason}`);
+  }
+}
+
+/** "file: line 7: message" from a core error, naming the file it came from. */
+function locate(path: string, error: SubdivError): string {
+  return error.line > 0 ? `${path}: line ${error.line}: ${error.message}` : `${path}: ${error.message}`;
+}
+
+async function run(args: CliArgs, io: CliIo): Promise<void> {
+  await initNode();
+  const schemes = schemeNames();
+  if (!schemes.includes(args.scheme)) {
+    throw new UsageError(`unknown scheme "${args.scheme}" (known: ${schemes.join(', ')})`);
+  }
+  const text = readInput(args.input);
+  let result: Mesh;
+  let ms: number;
+  try {
+    const mesh = parseMesh(text, inputFormat(args.input, text));
+    const start = performance.now();
+    result = subdivide(mesh, { scheme: args.scheme as SchemeName, levels: args.levels, triangulate: args.triangulate });
+    ms = performance.now() - start;
+  } catch (error) {
+    if (error instanceof SubdivError) throw new InputError(locate(args.input, error));
+    throw error;
+  }
+  if (args.output) {
+    try {
+      writeFileSync(args.output.path, exportMesh(result, args.output.format));
+    } catch (error) {
+      if (error instanceof SubdivError) throw new InputError(locate(args.output.path, error));
+      throw new InputError(`${args.output.path}: cannot write: ${(error as Error).message}`);
+    }
+  }
+  if (args.stats) {
+    const f = meshFacts(result);
+    const stats = {
+      vertices: f.vertices,
+      edges: f.edges,
+      faces: f.faces,
+      components: f.components,
+      boundaries: f.boundaries,
+      eulerCharacteristic: f.eulerCharacteristic,
+      genus: f.genus,
+      closed: f.closed,
+      triangles: f.triangles,
+      quads: f.quads,
+      otherFaces: f.otherFaces,
+      ms: Math.round(ms * 1000) / 1000,
+    };
+    io.stdout(`${JSON.stringify(stats)}\n`);
+  }
+  if (!args.output && !args.stats) io.stdout(exportMesh(result, 'off'));
+}
+
+/**
+ * Runs the CLI on `argv` (without node and the script) and returns the exit
+ * status: 0 success, 1 bad input (one `error:` line on stderr), 2 bad usage.
+ */
+export async function main(argv: string[], io: CliIo = processIo): Promise<number> {
+  try {
+    const args = parseCliArgs(argv);
+    if (args.help) {
+      io.stdout(`${USAGE}\n`);
+      return 0;
+    }
+    await run(args, io);
+    return 0;
+  } catch (error) {
+    if (error instanceof UsageError) {
+      io.stderr(`subdiv: ${error.message}\n${USAGE}\n`);
+      return 2;
+    }
+    if (error instanceof InputError) {
+      io.stderr(`error: ${error.message}\n`);
+      return 1;
+    }
+    const message = error instanceof Error ? error.message : String(error);
+    io.stderr(`error: ${message.split('\n')[0]}\n`);
+    return 1;
+  }
+}
