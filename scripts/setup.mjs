@@ -16,8 +16,15 @@ const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const args = new Set(process.argv.slice(2));
 
 const DEBIAN_PACKAGES = [
-  'emscripten', 'libcgal-dev', 'libboost-dev', 'libgtest-dev',
-  'cmake', 'g++', 'make', 'chromium', 'libcgal-demo',
+  'emscripten',
+  'libcgal-dev',
+  'libboost-dev',
+  'libgtest-dev',
+  'cmake',
+  'g++',
+  'make',
+  'chromium',
+  'libcgal-demo',
 ];
 
 function log(message) {
@@ -33,6 +40,7 @@ function run(cmd, cmdArgs, options = {}) {
 
 function missingDebianPackages() {
   return DEBIAN_PACKAGES.filter((name) => {
+    // biome-ignore lint/suspicious/noTemplateCurlyInString: dpkg-query's own format syntax
     const r = spawnSync('dpkg-query', ['-W', '-f=${Status}', name], { encoding: 'utf8' });
     return r.status !== 0 || !r.stdout.includes('install ok installed');
   });
@@ -59,17 +67,24 @@ function installNpmDependencies() {
 }
 
 function extractCgalMeshes() {
-  const names = ['mannequin-devil.off', 'elephant.off', 'bunny00.off', 'fandisk.off',
-    'cube_quad.off', 'holes.off', 'torus_quad.off'];
+  const names = [
+    'mannequin-devil.off',
+    'elephant.off',
+    'bunny00.off',
+    'fandisk.off',
+    'cube_quad.off',
+    'holes.off',
+    'torus_quad.off',
+  ];
   const outDir = join(root, 'public', 'meshes', 'cgal');
   if (names.every((n) => existsSync(join(outDir, n)))) return;
-  const archive = ['/usr/share/doc/libcgal-demo/data.tar.gz', '/usr/share/doc/libcgal-dev/data.tar.gz']
-    .find((p) => existsSync(p));
+  const archive = ['/usr/share/doc/libcgal-demo/data.tar.gz', '/usr/share/doc/libcgal-dev/data.tar.gz'].find((p) =>
+    existsSync(p),
+  );
   if (!archive) throw new Error('CGAL data set not found: install Debian package libcgal-demo');
   log(`extracting CGAL sample meshes from ${archive}`);
   mkdirSync(outDir, { recursive: true });
-  run('tar', ['-xzf', archive, '-C', outDir, '--strip-components=2',
-    ...names.map((n) => `data/meshes/${n}`)]);
+  run('tar', ['-xzf', archive, '-C', outDir, '--strip-components=2', ...names.map((n) => `data/meshes/${n}`)]);
 }
 
 function cmakeBuild(buildDir, configure) {

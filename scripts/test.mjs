@@ -1,0 +1,114 @@
+#!/usr/bin/env node
+// Every test, in order, after `node scripts/setup.mjs` (npm test runs both):
+//   1. lint        biome check + tsc --noEmit
+//   2. native      build/native/core_tests (GoogleTest; built by setup.mjs --native)
+//   3. unit        vitest (tests/unit, Node against the real WASM and the CLI)
+//   4. e2e         Playwright (tests/e2e), when playwright.config.ts exists
+// Each step's output is shown; the first failing step stops the run with a
+// non-zero exit. The last line sums the tests: "N passed, M failed".
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const bin = (name) => join(root, 'node_modules', '.bin', name);
+const resultsDir = join(root, 'build', 'test-results');
+mkdirSync(resultsDir, { recursive: true });
+
+const totals = { passed: 0, failed: 0 };
+
+function run(cmd, args, options = {}) {
+  const result = spawnSync(cmd, args, { stdio: 'inherit', cwd: root, ...options });
+  return result.status ?? 1;
+}
+
+function heading(title) {
+  console.log(`\n=== ${title} ===`);
+}
+
+function finish(failedStep) {
+  if (failedStep) console.error(`\n[test] step "${failedStep}" failed`);
+  console.log(`${totals.passed} passed, ${totals.failed} failed`);
+  process.exit(failedStep ? 1 : 0);
+}
+
+function readJson(path) {
+  try {
+    return JSON.parse(readFileSync(path, 'utf8'));
+  } catch {
+    return null;
+  }
+}
+
+function lint() {
+  heading('lint: biome check');
+  if (run(bin('biome'), ['check', '.']) !== 0) return false;
+  heading('lint: tsc --noEmit');
+  return run(bin('tsc'), ['--noEmit', '-p', '.']) === 0;
+}
+
+function nativeTests() {
+  heading('native: build (setup.mjs --native)');
+  if (run(process.execPath, [join(root, 'scripts', 'setup.mjs'), '--native']) !== 0) return false;
+  heading('native: core_tests');
+  const xml = join(resultsDir, 'core_tests.xml');
+  rmSync(xml, { force: true });
+  const status = run(join(root, 'build', 'native', 'core_tests'), [`--gtest_output=xml:${xml}`]);
+  if (existsSync(xml)) {
+    const head = /<testsuites[^>]*>/.exec(readFileSync(xml, 'utf8'))?.[0] ?? '';
+    const attr = (name) => Number(new RegExp(`\\b${name}="(\\d+)"`).exec(head)?.[1] ?? 0);
+    const failed = attr('failures') + attr('errors');
+    totals.passed += attr('tests') - failed - attr('disabled') - attr('skipped');
+    totals.failed += failed;
+  } else if (status !== 0) {
+    totals.failed += 1;
+  }
+  return status === 0;
+}
+
+function unitTests() {
+  heading('unit: vitest');
+  const json = join(resultsDir, 'vitest.json');
+  rmSync(json, { force: true });
+  const status = run(bin('vitest'), ['run', '--reporter=default', '--reporter=json', `--outputFile.json=${json}`]);
+  const report = readJson(json);
+  if (report) {
+    totals.passed += report.numPassedTests;
+    totals.failed += report.numFailedTests;
+  } else if (status !== 0) {
+    totals.failed += 1;
+  }
+  return status === 0;
+}
+
+function e2eTests() {
+  if (!existsSync(join(root, 'playwright.config.ts'))) {
+    heading('e2e: skipped (no playwright.config.ts)');
+    return true;
+  }
+  heading('e2e: playwright');
+  const json = join(resultsDir, 'playwright.json');
+  rmSync(json, { force: true });
+  const env = { ...process.env, PLAYWRIGHT_JSON_OUTPUT_NAME: json };
+  const status = run(bin('playwright'), ['test', '--reporter=list,json'], { env });
+  const stats = readJson(json)?.stats;
+  if (stats) {
+    totals.passed += stats.expected + stats.flaky;
+    totals.failed += stats.unexpected;
+  } else if (status !== 0) {
+    totals.failed += 1;
+  }
+  return status === 0;
+}
+
+const steps = [
+  ['lint', lint],
+  ['native', nativeTests],
+  ['unit', unitTests],
+  ['e2e', e2eTests],
+];
+for (const [name, step] of steps) {
+  if (!step()) finish(name);
+}
+finish(null);
