@@ -1,0 +1,242 @@
+// build_mesh / to_buffers: every check with its message, and exact
+// round trips between buffers and Surface_mesh.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/mesh_build.h"
+
+namespace subdivlab {
+namespace {
+
+Mesh_buffers cube_buffers() {
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  b.face_sizes = {4, 4, 4, 4, 4, 4};
+  b.face_indices = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+  return b;
+}
+
+/// Face f of b as a list of vertex indices.
+std::vector<std::uint32_t> face(const Mesh_buffers& b, std::size_t f) {
+  std::size_t o = 0;
+  for (std::size_t i = 0; i < f; ++i) o += b.face_sizes[i];
+  return {b.face_indices.begin() + o, b.face_indices.begin() + o + b.face_sizes[f]};
+}
+
+/// Same cyclic sequence, whatever the first corner.
+bool same_cycle(std::vector<std::uint32_t> a, const std::vector<std::uint32_t>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t r = 0; r < a.size(); ++r) {
+    if (a == b) return true;
+    std::rotate(a.begin(), a.begin() + 1, a.end());
+  }
+  return false;
+}
+
+/// Builds and expects failure with the given code; returns the message.
+std::string build_error(const Mesh_buffers& b, Status_code code = Status_code::invalid_mesh) {
+  Mesh m;
+  const Status s = build_mesh(b, m);
+  EXPECT_EQ(s.code, code) << s.message;
+  EXPECT_EQ(s.line, 0);
+  EXPECT_EQ(m.number_of_vertices(), 0u) << "a failed build leaves the mesh empty";
+  EXPECT_EQ(m.number_of_faces(), 0u);
+  return s.message;
+}
+
+TEST(BuildMesh, CubeBuildsWithItsCounts) {
+  Mesh m;
+  const Status s = build_mesh(cube_buffers(), m);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(m.number_of_vertices(), 8u);
+  EXPECT_EQ(m.number_of_faces(), 6u);
+  EXPECT_EQ(m.number_of_edges(), 12u);
+  EXPECT_TRUE(CGAL::is_closed(m));
+  EXPECT_TRUE(m.is_valid(false));
+}
+
+TEST(BuildMesh, ToBuffersKeepsVertexNumbersPositionsAndFaces) {
+  const Mesh_buffers in = cube_buffers();
+  Mesh m;
+  ASSERT_TRUE(build_mesh(in, m).ok());
+  const Mesh_buffers out = to_buffers(m);
+  EXPECT_EQ(out.positions, in.positions);  // exact: the same doubles in the same order
+  EXPECT_EQ(out.face_sizes, in.face_sizes);
+  for (std::size_t f = 0; f < in.face_count(); ++f) {
+    EXPECT_TRUE(same_cycle(face(out, f), face(in, f))) << "face " << f;
+  }
+  EXPECT_TRUE(out.control_edges.empty());
+}
+
+TEST(BuildMesh, ToBuffersRenumbersAfterRemovals) {
+  Mesh m;
+  ASSERT_TRUE(build_mesh(cube_buffers(), m).ok());
+  // Removing a face leaves its vertices; removing vertex 0's faces and the
+  // vertex leaves a hole in the index range that to_buffers closes.
+  std::vector<Mesh::Face_index> around;
+  for (auto f : CGAL::faces_around_target(m.halfedge(Mesh::Vertex_index(0)), m)) around.push_back(f);
+  for (auto f : around) CGAL::Euler::remove_face(m.halfedge(f), m);
+  ASSERT_EQ(m.number_of_vertices(), 7u);
+  const Mesh_buffers out = to_buffers(m);
+  EXPECT_EQ(out.vertex_count(), 7u);
+  EXPECT_EQ(out.face_count(), 3u);
+  for (auto v : out.face_indices) EXPECT_LT(v, 7u);
+  // Old vertex 1 (1,0,0) is now vertex 0.
+  EXPECT_EQ(out.positions[0], 1.0);
+  EXPECT_EQ(out.positions[1], 0.0);
+}
+
+TEST(BuildMesh, IsolatedVerticesAreDroppedAndTheRestKeepTheirOrder) {
+  Mesh_buffers b;
+  b.positions = {9, 9, 9, 0, 0, 0, 1, 0, 0, 7, 7, 7, 0, 1, 0};
+  b.face_sizes = {3};
+  b.face_indices = {1, 2, 4};
+  Mesh m;
+  ASSERT_TRUE(build_mesh(b, m).ok());
+  const Mesh_buffers out = to_buffers(m);
+  EXPECT_EQ(out.positions, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  EXPECT_EQ(out.face_indices, (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
+TEST(BuildMesh, PolygonsStayPolygons) {
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 2, 0, 0, 3, 1, 0, 2, 2, 0, 0, 2, 0, -1, 1, 0};
+  b.face_sizes = {6};
+  b.face_indices = {0, 1, 2, 3, 4, 5};
+  Mesh m;
+  ASSERT_TRUE(build_mesh(b, m).ok());
+  EXPECT_EQ(m.number_of_faces(), 1u);
+  EXPECT_EQ(m.degree(*m.faces().begin()), 6u);
+  EXPECT_EQ(to_buffers(m).face_sizes, (std::vector<std::uint32_t>{6}));
+}
+
+TEST(BuildErrors, NoFaces) {
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  EXPECT_EQ(build_error(b), "the mesh has no faces");
+  EXPECT_EQ(build_error(Mesh_buffers{}), "the mesh has no faces");
+}
+
+TEST(BuildErrors, InconsistentArrays) {
+  Mesh_buffers b = cube_buffers();
+  b.face_indices.pop_back();
+  EXPECT_EQ(build_error(b), "face sizes add up to 24 indices but there are 23");
+  b = cube_buffers();
+  b.positions.push_back(1.0);
+  EXPECT_EQ(build_error(b), "positions hold 25 numbers, not a multiple of 3");
+}
+
+TEST(BuildErrors, NonFiniteCoordinateNamesTheVertex) {
+  Mesh_buffers b = cube_buffers();
+  b.positions[3 * 5 + 1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(build_error(b), "vertex 5 has a non-finite coordinate");
+  b = cube_buffers();
+  b.positions[3 * 2 + 2] = -std::numeric_limits<double>::infinity();
+  EXPECT_EQ(build_error(b), "vertex 2 has a non-finite coordinate");
+}
+
+TEST(BuildErrors, FaceWithFewerThanThreeVertices) {
+  Mesh_buffers b = cube_buffers();
+  b.face_sizes = {4, 4, 4, 4, 4, 2, 2};
+  EXPECT_EQ(build_error(b), "face 5 has 2 vertices; a face needs at least 3");
+  b = cube_buffers();
+  b.face_sizes.push_back(0);
+  EXPECT_EQ(build_error(b), "face 6 has 0 vertices; a face needs at least 3");
+}
+
+TEST(BuildErrors, IndexOutOfRange) {
+  Mesh_buffers b = cube_buffers();
+  b.face_indices[9] = 12;  // face 2
+  EXPECT_EQ(build_error(b), "face 2: vertex index 12 is out of range (8 vertices)");
+}
+
+TEST(BuildErrors, RepeatedVertexInAFace) {
+  Mesh_buffers b = cube_buffers();
+  b.face_indices[6] = 4;  // face 1 = 4 5 4 7
+  EXPECT_EQ(build_error(b), "face 1 uses vertex 4 more than once");
+}
+
+TEST(BuildErrors, FirstFailingFaceWinsAndChecksRunInOrder) {
+  Mesh_buffers b = cube_buffers();
+  b.face_indices[20] = 99;  // face 5 out of range
+  b.face_indices[5] = 4;    // face 1 repeats vertex 4
+  EXPECT_EQ(build_error(b), "face 1 uses vertex 4 more than once");
+  b.positions[0] = std::numeric_limits<double>::infinity();  // coordinates come before faces
+  EXPECT_EQ(build_error(b), "vertex 0 has a non-finite coordinate");
+}
+
+TEST(BuildErrors, EdgeUsedByThreeFaces) {
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
+  b.face_sizes = {3, 3, 3};
+  b.face_indices = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+  EXPECT_EQ(build_error(b),
+            "non-manifold edge between vertices 0 and 1: used by 3 faces (faces 0, 1 and 2)");
+}
+
+TEST(BuildErrors, InconsistentOrientation) {
+  Mesh_buffers b = cube_buffers();
+  std::reverse(b.face_indices.begin() + 4, b.face_indices.begin() + 8);  // face 1 flipped
+  EXPECT_EQ(build_error(b),
+            "inconsistent orientation: faces 1 and 2 both use edge 5\u21924 in the same direction");
+}
+
+TEST(BuildErrors, TwoTrianglesSharingAnEdgeTheSameWay) {
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0};
+  b.face_sizes = {3, 3};
+  b.face_indices = {0, 1, 2, 0, 1, 3};
+  EXPECT_EQ(build_error(b),
+            "inconsistent orientation: faces 0 and 1 both use edge 0\u21921 in the same direction");
+}
+
+TEST(BuildErrors, NonManifoldVertexBowtie) {
+  // Two triangles that share vertex 0 and nothing else.
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, -1, 0};
+  b.face_sizes = {3, 3};
+  b.face_indices = {0, 1, 2, 0, 3, 4};
+  EXPECT_EQ(build_error(b),
+            "non-manifold vertex 0: its faces form 2 separate fans that meet only at this vertex "
+            "(faces 0 and 1)");
+}
+
+TEST(BuildErrors, NonManifoldVertexOfTwoClosedCones) {
+  // Two tetrahedra glued at one vertex (vertex 0): every edge is fine, the
+  // vertex is not.
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1};
+  b.face_sizes = {3, 3, 3, 3, 3, 3, 3, 3};
+  b.face_indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3,   // first tetrahedron
+                    0, 4, 5, 0, 5, 6, 0, 6, 4, 4, 6, 5};  // second
+  const std::string m = build_error(b);
+  EXPECT_NE(m.find("non-manifold vertex 0"), std::string::npos) << m;
+  EXPECT_NE(m.find("2 separate fans"), std::string::npos) << m;
+}
+
+TEST(BuildErrors, EdgeCheckComesBeforeOrientationCheck) {
+  Mesh_buffers b;
+  b.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
+  b.face_sizes = {3, 3, 3};
+  b.face_indices = {0, 1, 2, 0, 1, 3, 0, 1, 4};  // 3 faces, all the same direction
+  EXPECT_NE(build_error(b).find("non-manifold edge between vertices 0 and 1"), std::string::npos);
+}
+
+TEST(BuildErrors, AFailedBuildClearsAPreviousMesh) {
+  Mesh m;
+  ASSERT_TRUE(build_mesh(cube_buffers(), m).ok());
+  Mesh_buffers bad = cube_buffers();
+  bad.face_indices[0] = 100;
+  EXPECT_FALSE(build_mesh(bad, m).ok());
+  EXPECT_EQ(m.number_of_vertices(), 0u);
+  ASSERT_TRUE(build_mesh(cube_buffers(), m).ok());
+  EXPECT_EQ(m.number_of_faces(), 6u);
+}
+
+}  // namespace
+}  // namespace subdivlab

@@ -1,0 +1,71 @@
+// Counts, topology and bounding box of a mesh.
+
+#include "mesh_facts.h"
+
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "mesh_build.h"
+
+namespace subdivlab {
+
+Mesh_facts compute_facts(const Mesh& mesh) {
+  Mesh_facts facts;
+  facts.vertices = mesh.number_of_vertices();
+  facts.edges = mesh.number_of_edges();
+  facts.faces = mesh.number_of_faces();
+  if (facts.faces > 0) {
+    std::vector<std::size_t> component(mesh.num_faces(), 0);
+    facts.components = CGAL::Polygon_mesh_processing::connected_components(
+        mesh, CGAL::make_property_map(component));
+  }
+
+  // Each boundary loop is a cycle of border halfedges; walk each once.
+  std::vector<bool> seen(mesh.num_halfedges(), false);
+  for (Mesh::Halfedge_index h : mesh.halfedges()) {
+    if (!mesh.is_border(h) || seen[h.idx()]) continue;
+    ++facts.boundaries;
+    for (Mesh::Halfedge_index g = h; !seen[g.idx()]; g = mesh.next(g)) seen[g.idx()] = true;
+  }
+
+  facts.euler_characteristic = static_cast<long>(facts.vertices) - static_cast<long>(facts.edges) +
+                               static_cast<long>(facts.faces);
+  facts.genus = (2 * static_cast<long>(facts.components) - facts.euler_characteristic -
+                 static_cast<long>(facts.boundaries)) /
+                2;
+  facts.closed = facts.boundaries == 0;
+
+  for (Mesh::Face_index f : mesh.faces()) {
+    switch (mesh.degree(f)) {
+      case 3: ++facts.triangles; break;
+      case 4: ++facts.quads; break;
+      default: ++facts.other_faces; break;
+    }
+  }
+
+  bool first = true;
+  for (Mesh::Vertex_index v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    const double c[3] = {p.x(), p.y(), p.z()};
+    for (int a = 0; a < 3; ++a) {
+      if (first || c[a] < facts.bbox_min[a]) facts.bbox_min[a] = c[a];
+      if (first || c[a] > facts.bbox_max[a]) facts.bbox_max[a] = c[a];
+    }
+    first = false;
+  }
+  return facts;
+}
+
+Result<Mesh_facts> compute_facts(const Mesh_buffers& buffers) {
+  Result<Mesh_facts> r;
+  Mesh mesh;
+  r.status = build_mesh(buffers, mesh);
+  if (!r.ok()) return r;
+  r.value = compute_facts(mesh);
+  r.value.control_edges = buffers.control_edges.size() / 2;
+  return r;
+}
+
+}  // namespace subdivlab
