@@ -9,12 +9,15 @@
 #include <emscripten/val.h>
 #include <malloc.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -266,6 +269,27 @@ val js_scheme_names() {
   });
 }
 
+/// Throws what `kind` names ("cgal", "std", "alloc", anything else: an int)
+/// inside the same guard as every export: lets the tests prove that such a
+/// failure comes back as an error object and that the instance lives on.
+val js_throw_for_test(const std::string& kind) {
+  return guarded([&]() -> val {
+    if (kind == "cgal")
+      CGAL::precondition_fail("is_triangle_mesh(mesh)", __FILE__, __LINE__,
+                              "raised by throw_for_test");
+    if (kind == "std") throw std::runtime_error("raised by throw_for_test");
+    if (kind == "alloc") {
+      // More than the 4 GB address space: malloc fails, operator new throws.
+      // (volatile: a new/delete pair may otherwise be optimised away.)
+      static char* volatile sink = nullptr;
+      volatile std::size_t bytes = std::size_t{0xFFFFFF00u};
+      sink = new char[bytes];
+      delete[] sink;
+    }
+    throw 42;
+  });
+}
+
 /// Bytes in use in the heap, for leak checks in the tests.
 double js_heap_in_use() {
   return static_cast<double>(static_cast<unsigned int>(mallinfo().uordblks));
@@ -282,4 +306,5 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("scheme_names", &subdivlab::js_scheme_names);
   emscripten::function("heap_in_use", &subdivlab::js_heap_in_use);
+  emscripten::function("throw_for_test", &subdivlab::js_throw_for_test);
 }

@@ -45,9 +45,11 @@ function readInput(path: string): string {
   }
 }
 
-/** "file: line 7: message" from a core error, naming the file it came from. */
+/** "file: line 7: message" from a core error (whose message may already start with "line 7: "). */
 function locate(path: string, error: SubdivError): string {
-  return error.line > 0 ? `${path}: line ${error.line}: ${error.message}` : `${path}: ${error.message}`;
+  const prefix = `line ${error.line}: `;
+  if (error.line > 0 && !error.message.startsWith(prefix)) return `${path}: ${prefix}${error.message}`;
+  return `${path}: ${error.message}`;
 }
 
 async function run(args: CliArgs, io: CliIo): Promise<void> {

@@ -29,6 +29,7 @@ interface CoreModule {
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   scheme_names(): RawResult<{ names: string[] }>;
   heap_in_use(): number;
+  throw_for_test(kind: string): RawFailure;
 }
 
 let core: CoreModule | null = null;
@@ -117,6 +118,16 @@ export function schemeNames(): string[] {
 /** Bytes allocated in the WebAssembly heap right now (for leak checks). */
 export function heapBytesInUse(): number {
   return module().heap_in_use();
+}
+
+/**
+ * Test hook: throws, inside the core's guard, a CGAL precondition failure
+ * (`'cgal'`), a std::exception (`'std'`), a failed allocation (`'alloc'`) or
+ * something else (`'other'`), and throws the SubdivError it comes back as.
+ */
+export function throwForTesting(kind: 'cgal' | 'std' | 'alloc' | 'other'): never {
+  unwrap(module().throw_for_test(kind));
+  throw new Error('throw_for_test returned without an error');
 }
 
 /** `'off'` or `'obj'` from a file name's extension (any case), otherwise null. */

@@ -1,0 +1,168 @@
+/** The TypeScript API over the WASM core: init, round trips, facts, names. */
+import { beforeAll, describe, expect, it } from 'vitest';
+import { initNode } from '../../web/core/init-node';
+import type { MeshFormat } from '../../web/core/mesh';
+import {
+  exportMesh,
+  formatFromFileName,
+  heapBytesInUse,
+  init,
+  isReady,
+  meshFacts,
+  parseMesh,
+  predictSize,
+  schemeNames,
+  subdivide,
+} from '../../web/core/subdiv-core';
+import { expectCounts, expectSamePoints, fixtureText, loadFixture } from './test-helpers';
+
+beforeAll(async () => {
+  await initNode();
+});
+
+const FIXTURES = [
+  'cube.off',
+  'cube.obj',
+  'tetrahedron.off',
+  'octahedron.off',
+  'icosahedron.off',
+  'torus-quad.off',
+  'torus-tri.off',
+  'grid-open.off',
+  'disk-tri.off',
+  'mixed-open.off',
+  'rhombicuboctahedron.off',
+  'two-tetrahedra.off',
+];
+
+describe('init', () => {
+  it('is idempotent: later calls resolve at once and keep the same instance', async () => {
+    expect(isReady()).toBe(true);
+    const before = heapBytesInUse();
+    await Promise.all([init(), init({ wasmBinary: new Uint8Array(0) }), initNode()]);
+    expect(isReady()).toBe(true);
+    expect(heapBytesInUse()).toBe(before);
+  });
+
+  it('names the four schemes in display order', () => {
+    expect(schemeNames().slice(0, 4)).toEqual(['catmull-clark', 'loop', 'doo-sabin', 'sqrt3']);
+  });
+});
+
+describe('round trips', () => {
+  const cases = FIXTURES.flatMap((name) => (['off', 'obj'] as MeshFormat[]).map((f) => [name, f] as const));
+  it.each(cases)('%s through %s: same counts and coordinates', (name, format) => {
+    const mesh = loadFixture(name);
+    const text = exportMesh(mesh, format);
+    const back = parseMesh(text, format);
+    expect(Array.from(back.faceSizes)).toEqual(Array.from(mesh.faceSizes));
+    expect(Array.from(back.faceIndices)).toEqual(Array.from(mesh.faceIndices));
+    expectSamePoints(back, mesh, 1e-12);
+  });
+
+  it('keeps subdivided coordinates (17 significant digits) through OFF and OBJ', () => {
+    const mesh = subdivide(loadFixture('icosahedron.off'), { scheme: 'loop', levels: 2 });
+    for (const format of ['off', 'obj'] as const) {
+      const back = parseMesh(exportMesh(mesh, format), format);
+      expectSamePoints(back, mesh, 0);
+      expect(back.faceIndices.length).toBe(mesh.faceIndices.length);
+    }
+  });
+
+  it('returns plain typed arrays that survive heap growth', () => {
+    const small = loadFixture('cube.off');
+    const copy = Float64Array.from(small.positions);
+    // A big step grows the WASM memory; arrays handed out before must not detach.
+    subdivide(loadFixture('torus-quad.off'), { scheme: 'catmull-clark', levels: 5 });
+    expect(small.positions).toBeInstanceOf(Float64Array);
+    expect(small.faceSizes).toBeInstanceOf(Uint32Array);
+    expect(small.faceIndices).toBeInstanceOf(Uint32Array);
+    expect(small.controlEdges).toBeInstanceOf(Uint32Array);
+    expect(Array.from(small.positions)).toEqual(Array.from(copy));
+  });
+
+  it('accepts plain arrays as input buffers too', () => {
+    const cube = loadFixture('cube.off');
+    const loose = {
+      positions: Array.from(cube.positions),
+      faceSizes: Array.from(cube.faceSizes),
+      faceIndices: Array.from(cube.faceIndices),
+      controlEdges: [],
+    } as unknown as typeof cube;
+    expectCounts(meshFacts(loose), { vertices: 8, edges: 12, faces: 6 });
+  });
+});
+
+describe('facts', () => {
+  it('of the fixtures: counts, components, boundaries, genus, face kinds, bounding box', () => {
+    expect(meshFacts(loadFixture('cube.off'))).toEqual({
+      vertices: 8,
+      edges: 12,
+      faces: 6,
+      components: 1,
+      boundaries: 0,
+      eulerCharacteristic: 2,
+      genus: 0,
+      closed: true,
+      triangles: 0,
+      quads: 6,
+      otherFaces: 0,
+      bboxMin: [-1, -1, -1],
+      bboxMax: [1, 1, 1],
+      controlEdges: 0,
+    });
+    expectCounts(meshFacts(loadFixture('torus-quad.off')), {
+      vertices: 48,
+      edges: 96,
+      faces: 48,
+      eulerCharacteristic: 0,
+      genus: 1,
+      closed: true,
+    });
+    expectCounts(meshFacts(loadFixture('mixed-open.off')), {
+      vertices: 13,
+      faces: 9,
+      components: 1,
+      boundaries: 1,
+      closed: false,
+      triangles: 6,
+      quads: 2,
+      otherFaces: 1,
+      genus: 0,
+    });
+    expectCounts(meshFacts(loadFixture('two-tetrahedra.off')), {
+      components: 2,
+      eulerCharacteristic: 4,
+      genus: 0,
+    });
+  });
+
+  it('the OBJ cube (with vt/vn and extra statements) equals the OFF cube', () => {
+    const obj = parseMesh(fixtureText('cube.obj'), 'obj');
+    expectCounts(meshFacts(obj), { vertices: 8, edges: 12, faces: 6, quads: 6, genus: 0 });
+  });
+});
+
+describe('predictSize', () => {
+  it('predicts the counts subdivide gives', () => {
+    const torus = loadFixture('torus-quad.off');
+    for (const levels of [1, 2, 3]) {
+      const p = predictSize(torus, { scheme: 'catmull-clark', levels });
+      const f = meshFacts(subdivide(torus, { scheme: 'catmull-clark', levels }));
+      expect([p.vertices, p.edges, p.faces]).toEqual([f.vertices, f.edges, f.faces]);
+      expect(p.peakBytes).toBeGreaterThan(0);
+    }
+    const ico = loadFixture('icosahedron.off');
+    const p = predictSize(ico, { scheme: 'loop', levels: 4 });
+    expect(p.faces).toBe(20 * 4 ** 4);
+  });
+});
+
+describe('formatFromFileName', () => {
+  it('reads the extension in any case', () => {
+    expect(formatFromFileName('bunny.OFF')).toBe('off');
+    expect(formatFromFileName('dir/x.obj')).toBe('obj');
+    expect(formatFromFileName('mesh.stl')).toBeNull();
+    expect(formatFromFileName('off')).toBeNull();
+  });
+});
