@@ -1,0 +1,154 @@
+/**
+ * Page object of the SubdivLab app: acts as a user (drops files, clicks,
+ * presses keys) and reads state through the typed test API on
+ * window.__subdivlab.
+ */
+import { readFile } from 'node:fs/promises';
+import { type Download, expect, type Locator, type Page, test } from '@playwright/test';
+import type { SubdivLabTestState } from '../../web/app/test-api';
+
+/** Counts shown in the facts panel. */
+export interface ShownFacts {
+  vertices: number;
+  edges: number;
+  faces: number;
+  components: number;
+  boundaries: number;
+  genus: number;
+  faceTypes: string;
+}
+
+export class SubdivLabPage {
+  constructor(readonly page: Page) {}
+
+  byTestId(id: string): Locator {
+    return this.page.getByTestId(id);
+  }
+
+  get canvas(): Locator {
+    return this.page.locator('canvas.subdiv-canvas');
+  }
+
+  get errorBanner(): Locator {
+    return this.byTestId('error.banner');
+  }
+
+  /** Opens the app (with an optional query) and waits for the WASM core. */
+  async open(query = ''): Promise<void> {
+    await this.page.goto(`./${query}`);
+    await this.page.waitForFunction(() => window.__subdivlab?.state().ready === true, undefined, { timeout: 30_000 });
+  }
+
+  async state(): Promise<SubdivLabTestState> {
+    return this.page.evaluate(() => {
+      const api = window.__subdivlab;
+      if (!api) throw new Error('window.__subdivlab is missing');
+      return api.state();
+    });
+  }
+
+  /** Waits until no load or step runs. */
+  async idle(): Promise<SubdivLabTestState> {
+    await this.page.waitForFunction(() => window.__subdivlab?.state().busy === false);
+    return this.state();
+  }
+
+  /**
+   * Drags a file over the page and drops it, as the OS would: a DataTransfer
+   * carrying the file's bytes, dispatched as dragenter, dragover and drop.
+   * Checks that the drop target shows while dragging.
+   */
+  async dropFile(name: string, contents: string | Buffer): Promise<void> {
+    await test.step(`drop ${name}`, async () => {
+      // Text crosses as a string (fast for big meshes), anything else as bytes.
+      const data = typeof contents === 'string' ? contents : [...contents];
+      const transfer = await this.page.evaluateHandle(
+        ({ name, data }) => {
+          const dt = new DataTransfer();
+          const part = typeof data === 'string' ? data : new Uint8Array(data);
+          dt.items.add(new File([part], name, { type: 'application/octet-stream' }));
+          return dt;
+        },
+        { name, data },
+      );
+      const target = this.page.locator('body');
+      await target.dispatchEvent('dragenter', { dataTransfer: transfer });
+      await target.dispatchEvent('dragover', { dataTransfer: transfer });
+      await expect(this.byTestId('dropzone')).toBeVisible();
+      await target.dispatchEvent('drop', { dataTransfer: transfer });
+      await expect(this.byTestId('dropzone')).toBeHidden();
+      await transfer.dispose();
+    });
+  }
+
+  /** Drops a file from disk under its own name. */
+  async dropPath(path: string, name = path.split('/').pop() ?? path): Promise<void> {
+    await this.dropFile(name, await readFile(path));
+  }
+
+  /** Drops a file and waits until it is the loaded model. */
+  async load(name: string, contents: string | Buffer): Promise<SubdivLabTestState> {
+    await this.dropFile(name, contents);
+    await expect(this.byTestId('facts.model')).toHaveText(name);
+    return this.idle();
+  }
+
+  async chooseScheme(scheme: string): Promise<void> {
+    await this.byTestId('controls.scheme').selectOption(scheme);
+    await expect.poll(async () => (await this.state()).scheme).toBe(scheme);
+  }
+
+  /** Presses Subdivide and waits for the next level to be shown. */
+  async subdivide(): Promise<SubdivLabTestState> {
+    const before = await this.state();
+    await this.byTestId('controls.subdivide').click();
+    await this.page.waitForFunction((n) => {
+      const s = window.__subdivlab?.state();
+      return s !== undefined && !s.busy && (s.levelCount > n || s.lastError !== null);
+    }, before.levelCount);
+    const after = await this.state();
+    expect(after.lastError, 'subdivision failed').toBeNull();
+    expect(after.level).toBe(before.levelCount);
+    return after;
+  }
+
+  /** Moves the level scrubber. */
+  async scrubTo(level: number): Promise<void> {
+    await this.byTestId('controls.level').fill(String(level));
+    await expect.poll(async () => (await this.state()).level).toBe(level);
+  }
+
+  /** Reads the facts panel (text the user sees). */
+  async facts(): Promise<ShownFacts> {
+    const read = async (key: string) => (await this.byTestId(`facts.${key}`).textContent()) ?? '';
+    const num = async (key: string) => Number(await read(key));
+    return {
+      vertices: await num('vertices'),
+      edges: await num('edges'),
+      faces: await num('faces'),
+      components: await num('components'),
+      boundaries: await num('boundaries'),
+      genus: await num('genus'),
+      faceTypes: await read('face-types'),
+    };
+  }
+
+  /** Pixels of the canvas as the compositor shows them (PNG bytes). */
+  async canvasPixels(): Promise<Buffer> {
+    // Let the on-demand render loop draw the latest state first.
+    await this.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    return this.canvas.screenshot();
+  }
+
+  /** Clicks `testId` and returns the download it starts. */
+  async download(testId: string): Promise<Download> {
+    const [download] = await Promise.all([this.page.waitForEvent('download'), this.byTestId(testId).click()]);
+    return download;
+  }
+
+  /** Screenshot of the page into test-results/ (looked at by people, not compared). */
+  async snapshot(name: string): Promise<void> {
+    await this.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    await this.page.screenshot({ path: `test-results/screenshots/${name}.png` });
+  }
+}

@@ -1,0 +1,131 @@
+/**
+ * Where mesh text comes from: a dropped or picked File, a gallery sample, or
+ * `?src=URL`. Each returns the text and the name shown to the user; each
+ * refuses what it should not read (wrong scheme, too large) with an Error
+ * whose message says why.
+ */
+import type { MeshFormat } from '../core/mesh';
+
+/** Largest file the app reads: the core's heap ends at 4 GB and text is about 3× the mesh. */
+export const MAX_FILE_BYTES = 256 * 1024 * 1024;
+/** Largest download through `?src=`. */
+export const MAX_URL_BYTES = 64 * 1024 * 1024;
+
+export interface MeshText {
+  /** File name shown to the user and used in export names. */
+  name: string;
+  text: string;
+  format: MeshFormat;
+}
+
+/** A load failure that names its source (file name or URL). */
+export class LoadError extends Error {
+  constructor(
+    readonly source: string,
+    message: string,
+  ) {
+    super(message);
+    this.name = 'LoadError';
+  }
+}
+
+/** OFF or OBJ from the extension, else from the first meaningful line; null when neither fits. */
+export function detectFormat(name: string, text: string): MeshFormat | null {
+  const ext = /\.(off|obj)$/i.exec(name.trim());
+  if (ext) return ext[1].toLowerCase() as MeshFormat;
+  for (const raw of text.slice(0, 4096).split(/\r?\n/)) {
+    const line = raw.replace(/^\uFEFF/, '').trim();
+    if (line === '' || line.startsWith('#')) continue;
+    if (/^[ST]?C?N?4?n?OFF\b/.test(line)) return 'off';
+    if (/^(v|vn|vt|f|o|g|s|mtllib|usemtl)\s/.test(line)) return 'obj';
+    return null;
+  }
+  return null;
+}
+
+function withFormat(name: string, text: string): MeshText {
+  const format = detectFormat(name, text);
+  if (!format) throw new LoadError(name, 'This is not an OFF or OBJ file (expected a .off or .obj mesh).');
+  return { name, text, format };
+}
+
+/** Reads a dropped or picked file. */
+export async function readFile(file: File): Promise<MeshText> {
+  if (file.size > MAX_FILE_BYTES) {
+    throw new LoadError(file.name, `The file is ${formatMB(file.size)}; the limit is ${formatMB(MAX_FILE_BYTES)}.`);
+  }
+  if (file.size === 0) throw new LoadError(file.name, 'The file is empty.');
+  return withFormat(file.name, await file.text());
+}
+
+function formatMB(bytes: number): string {
+  return `${(bytes / (1024 * 1024)).toFixed(bytes < 1024 * 1024 ? 2 : 0)} MB`;
+}
+
+/** The last path segment of a URL, decoded, as a display name. */
+export function nameFromUrl(url: URL): string {
+  const segment = url.pathname.split('/').filter(Boolean).pop() ?? url.hostname;
+  try {
+    return decodeURIComponent(segment);
+  } catch {
+    return segment;
+  }
+}
+
+/**
+ * Fetches a mesh from `src` (absolute, or relative to `base`). Only http and
+ * https; reading stops as soon as more than `maxBytes` arrived, whatever the
+ * Content-Length said.
+ */
+export async function fetchMesh(src: string, base: string, maxBytes = MAX_URL_BYTES): Promise<MeshText> {
+  let url: URL;
+  try {
+    url = new URL(src, base);
+  } catch {
+    throw new LoadError(src, 'This is not a valid URL.');
+  }
+  if (url.protocol !== 'http:' && url.protocol !== 'https:') {
+    throw new LoadError(src, `Only http and https URLs can be loaded, not ${url.protocol}`);
+  }
+  const name = nameFromUrl(url);
+  let response: Response;
+  try {
+    response = await fetch(url, { credentials: 'omit' });
+  } catch {
+    throw new LoadError(
+      src,
+      'The download failed (network error, or the server does not allow cross-origin requests).',
+    );
+  }
+  if (!response.ok) throw new LoadError(src, `The server answered ${response.status} ${response.statusText}`.trim());
+  const declared = Number(response.headers.get('content-length') ?? 'NaN');
+  if (declared > maxBytes) {
+    throw new LoadError(src, `The file is ${formatMB(declared)}; the limit for URLs is ${formatMB(maxBytes)}.`);
+  }
+  const text = await readLimited(response, maxBytes, src);
+  return withFormat(name, text);
+}
+
+async function readLimited(response: Response, maxBytes: number, src: string): Promise<string> {
+  if (!response.body) return response.text();
+  const reader = response.body.getReader();
+  const chunks: Uint8Array[] = [];
+  let total = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    total += value.byteLength;
+    if (total > maxBytes) {
+      await reader.cancel();
+      throw new LoadError(src, `The file is larger than the limit for URLs (${formatMB(maxBytes)}).`);
+    }
+    chunks.push(value);
+  }
+  const bytes = new Uint8Array(total);
+  let offset = 0;
+  for (const chunk of chunks) {
+    bytes.set(chunk, offset);
+    offset += chunk.byteLength;
+  }
+  return new TextDecoder().decode(bytes);
+}

@@ -1,0 +1,29 @@
+/** The gallery's sample meshes, served from public/meshes/ (CGAL's are extracted there at set-up). */
+export interface Sample {
+  /** Used in test ids (`gallery.cube`). */
+  id: string;
+  /** Path relative to the page. */
+  path: string;
+  label: string;
+  /** One line: what it is good for. */
+  note: string;
+}
+
+export const SAMPLES: readonly Sample[] = [
+  { id: 'cube', path: 'meshes/cube.off', label: 'Cube', note: '6 quads, closed' },
+  { id: 'tetrahedron', path: 'meshes/tetrahedron.off', label: 'Tetrahedron', note: '4 triangles, closed' },
+  { id: 'octahedron', path: 'meshes/octahedron.off', label: 'Octahedron', note: '8 triangles, closed' },
+  { id: 'icosahedron', path: 'meshes/icosahedron.off', label: 'Icosahedron', note: '20 triangles, closed' },
+  { id: 'torus', path: 'meshes/torus.off', label: 'Torus', note: 'quads, genus 1' },
+  { id: 'open-grid', path: 'meshes/open-grid.off', label: 'Open grid', note: 'quads with a boundary' },
+  {
+    id: 'rhombicuboctahedron',
+    path: 'meshes/rhombicuboctahedron.off',
+    label: 'Rhombicuboctahedron',
+    note: '8 triangles + 18 quads',
+  },
+  { id: 'mannequin', path: 'meshes/cgal/mannequin-devil.off', label: 'Mannequin (CGAL)', note: 'real scan, triangles' },
+  { id: 'elephant', path: 'meshes/cgal/elephant.off', label: 'Elephant (CGAL)', note: 'real model, triangles' },
+  { id: 'fandisk', path: 'meshes/cgal/fandisk.off', label: 'Fandisk (CGAL)', note: 'CAD part, triangles' },
+  { id: 'holes', path: 'meshes/cgal/holes.off', label: 'Holes (CGAL)', note: 'triangles with boundaries' },
+];

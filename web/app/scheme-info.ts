@@ -1,0 +1,59 @@
+/** What the app says about each scheme the core offers. */
+import type { SchemeName } from '../core/mesh';
+
+export interface SchemeInfo {
+  /** Name shown in the picker. */
+  label: string;
+  /** One line for the picker's description. */
+  description: string;
+  /** The scheme refuses faces other than triangles (the core's `not_triangles`). */
+  needsTriangles: boolean;
+}
+
+const INFO: Record<string, SchemeInfo> = {
+  'catmull-clark': {
+    label: 'Catmull-Clark',
+    description: 'Quad refinement (PQQ): every face splits into quads; smooth, approximating. Any polygons.',
+    needsTriangles: false,
+  },
+  loop: {
+    label: 'Loop',
+    description: 'Triangle refinement (PTQ): each triangle splits into four; smooth, approximating. Needs triangles.',
+    needsTriangles: true,
+  },
+  'doo-sabin': {
+    label: 'Doo-Sabin',
+    description: 'Dual quad refinement (DQQ): new faces for every face, edge and vertex; cuts corners. Any polygons.',
+    needsTriangles: false,
+  },
+  sqrt3: {
+    label: '√3 (Kobbelt)',
+    description: 'Each triangle gets a centre vertex, then old edges flip; triples faces per step. Needs triangles.',
+    needsTriangles: true,
+  },
+  'quad-triangle': {
+    label: 'Quad/Triangle',
+    description: 'Stam & Loop: triangles and quads refined together; after one step only triangles and quads.',
+    needsTriangles: false,
+  },
+  linear: {
+    label: 'Linear (PQQ)',
+    description: 'Quad refinement with averaging only: centroids and midpoints, vertices stay. Any polygons.',
+    needsTriangles: false,
+  },
+  'linear-tri': {
+    label: 'Linear (PTQ)',
+    description: 'Midpoint split of triangles; the surface does not move. Needs triangles.',
+    needsTriangles: true,
+  },
+  custom: {
+    label: 'Custom rules',
+    description: 'Your own weights on a refinement host (see the rules panel).',
+    needsTriangles: false,
+  },
+};
+
+/** Info for a scheme name; names the app does not know yet get a neutral entry. */
+export function schemeInfo(name: SchemeName | string): SchemeInfo {
+  return INFO[name] ?? { label: name, description: `The core's ${name} scheme.`, needsTriangles: false };
+}

@@ -1,0 +1,337 @@
+/**
+ * SubdivViewer: a self-contained, embeddable viewer. It owns one SceneView
+ * (renderer, camera, controls) inside a container element and the history
+ * of levels 0..N of one model under one scheme. The core runs in a Web
+ * Worker (a WorkerClient, which several viewers may share). Methods reject
+ * with SubdivError / CancelledError / Error; the viewer never touches the
+ * DOM outside its container, so an app shell or an embed adds the panels.
+ */
+import type { Mesh, MeshFacts, MeshFormat, SchemeName, SizePrediction, SubdivideOptions } from '../core/mesh';
+import { type LevelData, WorkerClient } from '../core/worker-client';
+import { LevelGraphics } from '../render/level-graphics';
+import type { OverlayName, RenderMode } from '../render/render-mode';
+import { SceneView } from '../render/scene-view';
+import { exportSvg } from '../render/svg-export';
+import type { ViewState } from '../render/view-state';
+import { defaultMemoryBudget, stepBytes } from './memory-budget';
+
+/** What a large-step confirmation is told. */
+export interface LargeStepInfo {
+  level: number;
+  prediction: SizePrediction;
+  estimatedBytes: number;
+  budgetBytes: number;
+}
+
+export interface SubdivViewerOptions {
+  /** The core; pass one to share a worker between viewers. Default: a new one, disposed with the viewer. */
+  client?: WorkerClient;
+  scheme?: SchemeName;
+  renderMode?: RenderMode;
+  /** Asked before a step whose estimate exceeds the budget; resolve true to go on. Default: refuse. */
+  confirmLargeStep?: (info: LargeStepInfo) => Promise<boolean>;
+  /** Bytes a step may take before asking. Default: {@link defaultMemoryBudget}. */
+  memoryBudgetBytes?: number;
+}
+
+/** What the viewer is doing right now. */
+export interface BusyState {
+  kind: 'load' | 'subdivide' | 'export';
+  label: string;
+  /** performance.now() when it started. */
+  since: number;
+}
+
+/** A snapshot of the viewer, for panels and tests. */
+export interface ViewerState {
+  modelName: string | null;
+  scheme: SchemeName;
+  triangulate: boolean;
+  level: number;
+  /** Number of computed levels (levels 0..levelCount−1 exist). */
+  levelCount: number;
+  facts: MeshFacts | null;
+  /** Milliseconds of the step that produced the shown level (null at level 0). */
+  stepMs: number | null;
+  renderMode: RenderMode;
+  overlays: Record<OverlayName, boolean>;
+  busy: BusyState | null;
+}
+
+interface Level {
+  data: LevelData;
+  graphics: LevelGraphics | null;
+}
+
+export class SubdivViewer {
+  readonly view: SceneView;
+  readonly client: WorkerClient;
+  private readonly ownsClient: boolean;
+  private levels: Level[] = [];
+  private current = 0;
+  private name: string | null = null;
+  private scheme: SchemeName;
+  private triangulate = false;
+  private busyState: BusyState | null = null;
+  private readonly listeners = new Set<(state: ViewerState) => void>();
+  private memoryBudget: number;
+  private readonly confirmLargeStep: (info: LargeStepInfo) => Promise<boolean>;
+  /** Bumped by load/reset/scheme changes so a step that finishes late is dropped. */
+  private generation = 0;
+  /** A step is between its prediction and its result (possibly waiting for a confirmation). */
+  private stepping = false;
+
+  constructor(container: HTMLElement, options: SubdivViewerOptions = {}) {
+    this.ownsClient = !options.client;
+    this.client = options.client ?? new WorkerClient();
+    this.scheme = options.scheme ?? 'catmull-clark';
+    this.memoryBudget = options.memoryBudgetBytes ?? defaultMemoryBudget();
+    this.confirmLargeStep = options.confirmLargeStep ?? (async () => false);
+    this.view = new SceneView(container);
+    if (options.renderMode) this.view.setRenderMode(options.renderMode);
+  }
+
+  /** Scheme names the core offers (resolves once the WASM core is loaded). */
+  schemes(): Promise<string[]> {
+    return this.client.ready();
+  }
+
+  get state(): ViewerState {
+    const level = this.levels[this.current];
+    return {
+      modelName: this.name,
+      scheme: this.scheme,
+      triangulate: this.triangulate,
+      level: this.current,
+      levelCount: this.levels.length,
+      facts: level?.data.facts ?? null,
+      stepMs: level && this.current > 0 ? level.data.ms : null,
+      renderMode: this.view.renderMode,
+      overlays: { control: this.view.overlay('control'), bbox: this.view.overlay('bbox') },
+      busy: this.busyState,
+    };
+  }
+
+  /** Calls `listener` after every change; returns the unsubscribe function. */
+  onChange(listener: (state: ViewerState) => void): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  /** Shows `mesh` as level 0 of model `name`; earlier levels are dropped only once it succeeded. */
+  async load(mesh: Mesh, name: string): Promise<void> {
+    await this.replaceWith(name, () => this.client.prepare(mesh));
+  }
+
+  /** Parses OFF/OBJ text in the worker and shows it. On failure the previous model stays. */
+  async loadText(text: string, format: MeshFormat, name: string): Promise<void> {
+    await this.replaceWith(name, () => this.client.parse(text, format));
+  }
+
+  /**
+   * Computes level N+1 from the last level N and shows it. Before the step
+   * the core predicts its size; over the budget, `confirmLargeStep` decides.
+   * Resolves false when declined or when nothing is loaded.
+   */
+  async subdivide(): Promise<boolean> {
+    if (this.levels.length === 0 || this.busyState || this.stepping) return false;
+    this.stepping = true;
+    const generation = this.generation;
+    const from = this.levels.length - 1;
+    const options: SubdivideOptions = {
+      scheme: this.scheme,
+      levels: 1,
+      startLevel: from,
+      triangulate: this.triangulate,
+    };
+    const source = this.levels[from].data.mesh;
+    this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
+    try {
+      const prediction = await this.client.predictSize(source, options);
+      const estimatedBytes = stepBytes(prediction);
+      if (estimatedBytes > this.memoryBudget) {
+        this.setBusy(null);
+        const info = { level: from + 1, prediction, estimatedBytes, budgetBytes: this.memoryBudget };
+        if (!(await this.confirmLargeStep(info))) return false;
+        if (generation !== this.generation) return false;
+        this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
+      }
+      const data = await this.client.subdivide(source, options);
+      if (generation !== this.generation) return false;
+      this.levels.push({ data, graphics: null });
+      this.current = this.levels.length - 1;
+      this.show();
+      return true;
+    } finally {
+      this.stepping = false;
+      if (generation === this.generation) this.setBusy(null);
+    }
+  }
+
+  /** Shows computed level `k` (clamped to 0..N) at once. */
+  setLevel(k: number): void {
+    if (this.levels.length === 0) return;
+    const level = Math.max(0, Math.min(this.levels.length - 1, Math.round(k)));
+    if (level === this.current) return;
+    this.current = level;
+    this.show();
+  }
+
+  /** Drops every level above 0 and shows the control mesh. */
+  reset(): void {
+    this.cancel();
+    this.truncate();
+  }
+
+  /** Changes the scheme; levels computed with the previous one are dropped. */
+  setScheme(scheme: SchemeName): void {
+    if (scheme === this.scheme) return;
+    this.cancel();
+    this.scheme = scheme;
+    this.truncate();
+  }
+
+  /** Triangulate before the first step of a scheme that needs triangles; drops computed levels. */
+  setTriangulate(triangulate: boolean): void {
+    if (triangulate === this.triangulate) return;
+    this.cancel();
+    this.triangulate = triangulate;
+    this.truncate();
+  }
+
+  setRenderMode(mode: RenderMode): void {
+    this.view.setRenderMode(mode);
+    this.emit();
+  }
+
+  setOverlay(name: OverlayName, visible: boolean): void {
+    this.view.setOverlay(name, visible);
+    this.emit();
+  }
+
+  /** Stops a running load or step (the worker restarts); the levels computed so far stay. */
+  cancel(): void {
+    if (!this.busyState) return;
+    this.generation++;
+    this.client.cancel();
+    this.setBusy(null);
+  }
+
+  /** Points the camera at the whole model. */
+  fitView(): void {
+    const level = this.levels[this.current];
+    if (level?.graphics) this.view.fitSphere(level.graphics.boundingSphere);
+  }
+
+  getView(): ViewState {
+    return this.view.getView();
+  }
+
+  setView(view: ViewState): void {
+    this.view.setView(view);
+  }
+
+  /** PNG of the view at `scale` × its size. */
+  exportPng(scale: number, transparent: boolean): Promise<Blob> {
+    return this.view.exportPng(scale, transparent);
+  }
+
+  /** SVG of the view: camera-facing polygons back to front, and the control mesh when shown. */
+  exportSvg(transparent = false): string {
+    const level = this.requireLevel();
+    const control = this.view.overlay('control') ? this.levels[0].data.buffers : null;
+    return exportSvg({
+      mesh: level.data.mesh,
+      camera: this.view.camera,
+      ...this.view.size,
+      control,
+      background: !transparent,
+    });
+  }
+
+  /** OFF or OBJ text of the shown level. */
+  exportMesh(format: MeshFormat): Promise<string> {
+    return this.client.exportMesh(this.requireLevel().data.mesh, format);
+  }
+
+  /** The mesh of the shown level (null before a load). */
+  get mesh(): Mesh | null {
+    return this.levels[this.current]?.data.mesh ?? null;
+  }
+
+  /** The control mesh (level 0). */
+  get controlMesh(): Mesh | null {
+    return this.levels[0]?.data.mesh ?? null;
+  }
+
+  /** Budget over which a step asks first (tests lower it to see the question). */
+  setMemoryBudget(bytes: number): void {
+    this.memoryBudget = bytes;
+  }
+
+  /** Frees the GPU objects, the renderer and (if it made it) the worker. */
+  dispose(): void {
+    this.generation++;
+    for (const level of this.levels) level.graphics?.dispose();
+    this.levels = [];
+    this.view.dispose();
+    if (this.ownsClient) this.client.dispose();
+    this.listeners.clear();
+  }
+
+  private async replaceWith(name: string, produce: () => Promise<LevelData>): Promise<void> {
+    this.cancel();
+    const generation = ++this.generation;
+    this.setBusy({ kind: 'load', label: `Loading ${name}…`, since: performance.now() });
+    try {
+      const data = await produce();
+      if (generation !== this.generation) return;
+      for (const level of this.levels) level.graphics?.dispose();
+      this.levels = [{ data, graphics: null }];
+      this.current = 0;
+      this.name = name;
+      this.show();
+      this.fitView();
+    } finally {
+      if (generation === this.generation) this.setBusy(null);
+    }
+  }
+
+  private truncate(): void {
+    this.generation++;
+    for (const level of this.levels.slice(1)) level.graphics?.dispose();
+    this.levels = this.levels.slice(0, 1);
+    this.current = 0;
+    if (this.levels.length > 0) this.show();
+    else this.emit();
+  }
+
+  private requireLevel(): Level {
+    const level = this.levels[this.current];
+    if (!level) throw new Error('No mesh is loaded.');
+    return level;
+  }
+
+  private graphicsOf(level: Level): LevelGraphics {
+    if (!level.graphics) level.graphics = new LevelGraphics(level.data.buffers);
+    return level.graphics;
+  }
+
+  private show(): void {
+    const level = this.levels[this.current];
+    this.view.setLevel(this.graphicsOf(level));
+    this.view.setControlMesh(this.graphicsOf(this.levels[0]));
+    this.view.setBoundingBox(level.data.facts.bboxMin, level.data.facts.bboxMax);
+    this.emit();
+  }
+
+  private setBusy(busy: BusyState | null): void {
+    this.busyState = busy;
+    this.emit();
+  }
+
+  private emit(): void {
+    const state = this.state;
+    for (const listener of this.listeners) listener(state);
+  }
+}

@@ -1,0 +1,46 @@
+/**
+ * The typed test API on `window.__subdivlab`: Playwright reads state here
+ * (level, counts, last error, render mode, camera) instead of pixels.
+ */
+import type { MeshFacts } from '../core/mesh';
+import type { OverlayName, RenderMode } from '../render/render-mode';
+import type { ViewState } from '../render/view-state';
+
+export interface TestError {
+  source: string;
+  message: string;
+  /** SubdivError code, 'load_error' for LoadError, 'error' otherwise. */
+  code: string;
+}
+
+export interface SubdivLabTestState {
+  /** The core answered its scheme names. */
+  ready: boolean;
+  schemes: string[];
+  modelName: string | null;
+  scheme: string;
+  triangulate: boolean;
+  level: number;
+  levelCount: number;
+  facts: MeshFacts | null;
+  renderMode: RenderMode;
+  overlays: Record<OverlayName, boolean>;
+  busy: boolean;
+  lastError: TestError | null;
+  view: ViewState;
+  /** Vertical field of view in degrees and aspect ratio of the camera. */
+  fov: number;
+  aspect: number;
+}
+
+export interface SubdivLabTestApi {
+  state(): SubdivLabTestState;
+  /** Lowers the budget over which a step asks first (to test the question with small meshes). */
+  setMemoryBudget(bytes: number): void;
+}
+
+declare global {
+  interface Window {
+    __subdivlab?: SubdivLabTestApi;
+  }
+}

@@ -1,0 +1,96 @@
+/**
+ * The Web Worker that runs the WASM core off the main thread, so the page
+ * stays responsive during a long step. It imports the core's TS API only
+ * (never ./generated/), answers one request at a time and transfers results.
+ */
+import type { Mesh } from './mesh';
+import { renderBuffers } from './render-buffers';
+import { exportMesh, init, meshFacts, parseMesh, predictSize, schemeNames, subdivide } from './subdiv-core';
+import { SubdivError } from './subdiv-error';
+import type {
+  LevelData,
+  WorkerRequestKind,
+  WorkerRequestMessage,
+  WorkerRequests,
+  WorkerResponseMessage,
+} from './worker-protocol';
+
+/** The part of DedicatedWorkerGlobalScope this file uses (tsconfig has DOM types, not WebWorker). */
+interface WorkerScope {
+  onmessage: ((event: MessageEvent<WorkerRequestMessage>) => void) | null;
+  postMessage(message: WorkerResponseMessage, options?: { transfer?: Transferable[] }): void;
+}
+const scope = self as unknown as WorkerScope;
+
+function levelData(mesh: Mesh, ms: number): LevelData {
+  return { mesh, facts: meshFacts(mesh), buffers: renderBuffers(mesh), ms };
+}
+
+/** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
+function buffersOf(level: LevelData): Transferable[] {
+  const arrays = [
+    level.mesh.positions,
+    level.mesh.faceSizes,
+    level.mesh.faceIndices,
+    level.mesh.controlEdges,
+    level.buffers.positions,
+    level.buffers.triangles,
+    level.buffers.edges,
+    level.buffers.triangleFace,
+  ];
+  return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
+}
+
+type Handlers = {
+  [K in WorkerRequestKind]: (args: WorkerRequests[K]['args']) => Promise<WorkerRequests[K]['result']>;
+};
+
+const handlers: Handlers = {
+  async init() {
+    await init();
+    return schemeNames();
+  },
+  async parse({ text, format }) {
+    await init();
+    return levelData(parseMesh(text, format), 0);
+  },
+  async prepare({ mesh }) {
+    await init();
+    return levelData(mesh, 0);
+  },
+  async subdivide({ mesh, options }) {
+    await init();
+    const start = performance.now();
+    const result = subdivide(mesh, options);
+    const ms = performance.now() - start;
+    return levelData(result, ms);
+  },
+  async predict({ mesh, options }) {
+    await init();
+    return predictSize(mesh, options);
+  },
+  async export({ mesh, format }) {
+    await init();
+    return exportMesh(mesh, format);
+  },
+};
+
+scope.onmessage = async (event) => {
+  const { id, kind, args } = event.data;
+  try {
+    const handler = handlers[kind] as (a: typeof args) => Promise<unknown>;
+    const value = await handler(args);
+    const transfer = isLevelData(value) ? buffersOf(value) : [];
+    scope.postMessage({ id, ok: true, value }, { transfer });
+  } catch (error) {
+    const data =
+      error instanceof SubdivError
+        ? { code: error.code, message: error.message, line: error.line }
+        : { code: 'internal_error' as const, message: error instanceof Error ? error.message : String(error), line: 0 };
+    scope.postMessage({ id, ok: false, error: data });
+  }
+};
+
+function isLevelData(value: unknown): value is LevelData {
+  return typeof value === 'object' && value !== null && 'buffers' in value && 'mesh' in value;
+}

@@ -1,0 +1,51 @@
+/**
+ * Messages between the page (worker-client.ts) and the core's Web Worker
+ * (subdiv-worker.ts). Meshes cross as flat typed arrays; results are
+ * transferred, not copied.
+ */
+import type { Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
+import type { SubdivErrorCode } from './subdiv-error';
+
+/** One level as the viewer keeps it: the mesh, its facts and what the GPU draws. */
+export interface LevelData {
+  mesh: Mesh;
+  facts: MeshFacts;
+  buffers: RenderBuffers;
+  /** Milliseconds the core spent on the step (0 for a loaded mesh). */
+  ms: number;
+}
+
+/** Requests the worker understands, by kind. */
+export interface WorkerRequests {
+  /** Loads the WASM core; answers the scheme names. */
+  init: { args: Record<string, never>; result: string[] };
+  /** Parses OFF/OBJ text into a level-0 LevelData. */
+  parse: { args: { text: string; format: MeshFormat }; result: LevelData };
+  /** Facts and render buffers of a mesh the page already has. */
+  prepare: { args: { mesh: Mesh }; result: LevelData };
+  /** One or more steps of a scheme. */
+  subdivide: { args: { mesh: Mesh; options: SubdivideOptions }; result: LevelData };
+  /** Predicted counts and peak bytes of a step, without subdividing. */
+  predict: { args: { mesh: Mesh; options: SubdivideOptions }; result: SizePrediction };
+  /** OFF/OBJ text of a mesh. */
+  export: { args: { mesh: Mesh; format: MeshFormat }; result: string };
+}
+
+export type WorkerRequestKind = keyof WorkerRequests;
+
+export interface WorkerRequestMessage<K extends WorkerRequestKind = WorkerRequestKind> {
+  id: number;
+  kind: K;
+  args: WorkerRequests[K]['args'];
+}
+
+/** The error as data: SubdivError fields, or a plain Error's message with code internal_error. */
+export interface WorkerErrorData {
+  code: SubdivErrorCode;
+  message: string;
+  line: number;
+}
+
+export type WorkerResponseMessage =
+  | { id: number; ok: true; value: unknown }
+  | { id: number; ok: false; error: WorkerErrorData };

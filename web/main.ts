@@ -1,0 +1,9 @@
+/** Entry point of the SubdivLab page: builds the app shell, exposes the test API, honours ?src=. */
+import { AppShell } from './app/app-shell';
+import './ui/app.css';
+
+const root = document.getElementById('app');
+if (!root) throw new Error('index.html has no #app element');
+const app = new AppShell(root);
+window.__subdivlab = app.testApi();
+void app.loadFromQuery(window.location.search);

@@ -1,0 +1,40 @@
+/**
+ * GPU geometry of one level, built from the core's render buffers: a
+ * triangle geometry for the surface and a line geometry of the *polygon*
+ * edges (so quads are drawn as quads, never as triangle pairs). Both share
+ * one position attribute. Call dispose() when the level is dropped.
+ */
+import { BufferAttribute, BufferGeometry, type Sphere } from 'three';
+import type { RenderBuffers } from '../core/mesh';
+
+export class LevelGraphics {
+  /** Fanned polygons with smooth vertex normals (flat shading is a material switch). */
+  readonly surface: BufferGeometry;
+  /** Polygon edges as line segments. */
+  readonly edges: BufferGeometry;
+
+  constructor(buffers: RenderBuffers) {
+    const position = new BufferAttribute(buffers.positions, 3);
+    this.surface = new BufferGeometry();
+    this.surface.setAttribute('position', position);
+    this.surface.setIndex(new BufferAttribute(buffers.triangles, 1));
+    this.surface.computeVertexNormals();
+    this.surface.computeBoundingSphere();
+
+    this.edges = new BufferGeometry();
+    this.edges.setAttribute('position', position);
+    this.edges.setIndex(new BufferAttribute(buffers.edges, 1));
+  }
+
+  /** Bounding sphere of the surface. */
+  get boundingSphere(): Sphere {
+    if (!this.surface.boundingSphere) this.surface.computeBoundingSphere();
+    return this.surface.boundingSphere as Sphere;
+  }
+
+  /** Frees both geometries on the GPU. */
+  dispose(): void {
+    this.surface.dispose();
+    this.edges.dispose();
+  }
+}

@@ -1,0 +1,19 @@
+/** How the surface is drawn. Overlays (control mesh, bounding box) are separate toggles. */
+export type RenderMode = 'smooth' | 'flat' | 'edges' | 'wireframe';
+
+/** The modes in menu and `r`-cycling order, with their labels. */
+export const RENDER_MODES: readonly { mode: RenderMode; label: string }[] = [
+  { mode: 'smooth', label: 'Smooth shaded' },
+  { mode: 'flat', label: 'Flat shaded' },
+  { mode: 'edges', label: 'Shaded with polygon edges' },
+  { mode: 'wireframe', label: 'Wireframe (polygon edges)' },
+];
+
+/** The mode after `mode` in cycling order. */
+export function nextRenderMode(mode: RenderMode): RenderMode {
+  const i = RENDER_MODES.findIndex((m) => m.mode === mode);
+  return RENDER_MODES[(i + 1) % RENDER_MODES.length].mode;
+}
+
+/** Overlays drawn on top of the surface; issue 4 adds control-edge curves here. */
+export type OverlayName = 'control' | 'bbox';

@@ -1,0 +1,299 @@
+/**
+ * The three.js side of one viewer: renderer, scene, camera, trackball
+ * controls, the surface of the shown level, its polygon edges and the
+ * overlays. It draws on demand (when the camera or content changes), so
+ * several views can share a page. Geometry comes in as LevelGraphics, owned
+ * by the caller; this class owns only its materials and helper objects.
+ */
+import {
+  AmbientLight,
+  Box3,
+  Box3Helper,
+  Color,
+  DirectionalLight,
+  DoubleSide,
+  LineBasicMaterial,
+  LineSegments,
+  Mesh,
+  MeshLambertMaterial,
+  PerspectiveCamera,
+  Scene,
+  Sphere,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import { TrackballControls } from 'three/addons/controls/TrackballControls.js';
+import type { LevelGraphics } from './level-graphics';
+import type { OverlayName, RenderMode } from './render-mode';
+import type { ViewState } from './view-state';
+
+/** Colours shared by the WebGL view and the SVG export. */
+export const VIEW_COLORS = {
+  background: '#f3f4f6',
+  surface: '#8db4dc',
+  edges: '#1f2d3d',
+  control: '#e8590c',
+  bbox: '#6b7280',
+} as const;
+
+/** Direction the camera looks from (towards the model) when fitting: shows three sides of a box. */
+const FIT_DIRECTION = new Vector3(0.55, 0.45, 1).normalize();
+/** Light position in camera space (up and to the left, so the three sides of a box differ). */
+export const LIGHT_IN_CAMERA = new Vector3(-0.45, 0.8, 0.7).normalize();
+/** Ambient and directional shares of the surface colour (Lambert / π). */
+export const LIGHT_SHARES = { ambient: 0.32, directional: 0.8 } as const;
+
+export class SceneView {
+  readonly canvas: HTMLCanvasElement;
+  readonly camera: PerspectiveCamera;
+  private readonly renderer: WebGLRenderer;
+  private readonly scene = new Scene();
+  private readonly controls: TrackballControls;
+  private readonly surface: Mesh;
+  private readonly edgeLines: LineSegments;
+  private readonly controlLines: LineSegments;
+  private readonly smoothMaterial: MeshLambertMaterial;
+  private readonly flatMaterial: MeshLambertMaterial;
+  private bboxHelper: Box3Helper | null = null;
+  private readonly overlays = new Map<OverlayName, boolean>([
+    ['control', false],
+    ['bbox', false],
+  ]);
+  private mode: RenderMode = 'smooth';
+  private radius = 1;
+  private dirty = true;
+  private frame = 0;
+  private readonly resizeObserver: ResizeObserver;
+
+  constructor(private readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true, alpha: true });
+    this.renderer.setPixelRatio(window.devicePixelRatio);
+    this.renderer.setClearColor(new Color(VIEW_COLORS.background), 1);
+    this.canvas = this.renderer.domElement;
+    this.canvas.classList.add('subdiv-canvas');
+    container.append(this.canvas);
+
+    this.camera = new PerspectiveCamera(35, 1, 0.01, 100);
+    this.scene.add(this.camera);
+    this.scene.add(new AmbientLight(0xffffff, LIGHT_SHARES.ambient * Math.PI));
+    const light = new DirectionalLight(0xffffff, LIGHT_SHARES.directional * Math.PI);
+    light.position.copy(LIGHT_IN_CAMERA);
+    light.target.position.set(0, 0, 0);
+    this.camera.add(light, light.target);
+
+    const surfaceMaterial = {
+      color: VIEW_COLORS.surface,
+      side: DoubleSide,
+      // Push the surface back a little so polygon edges drawn at the same depth stay visible.
+      polygonOffset: true,
+      polygonOffsetFactor: 1,
+      polygonOffsetUnits: 1,
+    };
+    this.smoothMaterial = new MeshLambertMaterial(surfaceMaterial);
+    this.flatMaterial = new MeshLambertMaterial({ ...surfaceMaterial, flatShading: true });
+    this.surface = new Mesh(undefined, this.smoothMaterial);
+    this.edgeLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.edges }));
+    this.controlLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.control }));
+    this.controlLines.renderOrder = 1;
+    for (const object of [this.surface, this.edgeLines, this.controlLines]) {
+      object.visible = false;
+      object.frustumCulled = false;
+      this.scene.add(object);
+    }
+
+    this.controls = new TrackballControls(this.camera, this.canvas);
+    this.controls.rotateSpeed = 3;
+    this.controls.zoomSpeed = 1.2;
+    this.controls.panSpeed = 0.8;
+    // The app uses S for Subdivide; trackball's hold-a-key drag modes would steal A/S/D.
+    this.controls.keys = ['', '', ''];
+    this.controls.addEventListener('change', () => {
+      this.updateClipping();
+      this.dirty = true;
+    });
+
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+    this.resize();
+    this.fitSphere(new Sphere(new Vector3(), 1));
+    const loop = () => {
+      this.frame = requestAnimationFrame(loop);
+      this.controls.update();
+      if (this.dirty) this.render();
+    };
+    this.frame = requestAnimationFrame(loop);
+  }
+
+  /** Shows a level (null: nothing). The caller keeps ownership of `graphics`. */
+  setLevel(graphics: LevelGraphics | null): void {
+    if (graphics) {
+      this.surface.geometry = graphics.surface;
+      this.edgeLines.geometry = graphics.edges;
+    }
+    this.surface.userData.hasLevel = graphics !== null;
+    this.applyVisibility();
+  }
+
+  /** The level-0 graphics whose polygon edges form the control-mesh overlay. */
+  setControlMesh(graphics: LevelGraphics | null): void {
+    if (graphics) this.controlLines.geometry = graphics.edges;
+    this.controlLines.userData.hasLevel = graphics !== null;
+    this.applyVisibility();
+  }
+
+  /** The box drawn by the bounding-box overlay (from the core's facts). */
+  setBoundingBox(min: readonly number[] | null, max: readonly number[] | null): void {
+    if (this.bboxHelper) {
+      this.scene.remove(this.bboxHelper);
+      this.bboxHelper.dispose();
+      this.bboxHelper = null;
+    }
+    if (min && max) {
+      const box = new Box3(new Vector3(min[0], min[1], min[2]), new Vector3(max[0], max[1], max[2]));
+      this.bboxHelper = new Box3Helper(box, new Color(VIEW_COLORS.bbox));
+      this.scene.add(this.bboxHelper);
+    }
+    this.applyVisibility();
+  }
+
+  get renderMode(): RenderMode {
+    return this.mode;
+  }
+
+  setRenderMode(mode: RenderMode): void {
+    this.mode = mode;
+    // Edges go over smooth shading: flat shading of a non-planar quad would show its fan diagonal.
+    this.surface.material = mode === 'flat' ? this.flatMaterial : this.smoothMaterial;
+    this.applyVisibility();
+  }
+
+  overlay(name: OverlayName): boolean {
+    return this.overlays.get(name) ?? false;
+  }
+
+  setOverlay(name: OverlayName, visible: boolean): void {
+    this.overlays.set(name, visible);
+    this.applyVisibility();
+  }
+
+  /** Points the camera at `sphere` from the default direction, at a distance that shows all of it. */
+  fitSphere(sphere: Sphere): void {
+    this.radius = Math.max(sphere.radius, 1e-9);
+    const distance = (this.radius / Math.sin(((this.camera.fov / 2) * Math.PI) / 180)) * 1.2;
+    this.controls.target.copy(sphere.center);
+    this.camera.up.set(0, 1, 0);
+    this.camera.position.copy(sphere.center).addScaledVector(FIT_DIRECTION, distance);
+    this.camera.lookAt(sphere.center);
+    this.updateClipping();
+    this.controls.update();
+    this.dirty = true;
+  }
+
+  /** The current viewpoint. */
+  getView(): ViewState {
+    const p = this.camera.position;
+    const t = this.controls.target;
+    const u = this.camera.up;
+    return { position: [p.x, p.y, p.z], target: [t.x, t.y, t.z], up: [u.x, u.y, u.z] };
+  }
+
+  setView(view: ViewState): void {
+    this.camera.position.fromArray(view.position);
+    this.camera.up.fromArray(view.up).normalize();
+    this.controls.target.fromArray(view.target);
+    this.camera.lookAt(this.controls.target);
+    this.updateClipping();
+    this.controls.update();
+    this.dirty = true;
+  }
+
+  /** Marks the picture out of date; it is redrawn on the next animation frame. */
+  requestRender(): void {
+    this.dirty = true;
+  }
+
+  /** Draws now. */
+  render(): void {
+    this.dirty = false;
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  /** Size of the view in CSS pixels. */
+  get size(): { width: number; height: number } {
+    return { width: Math.max(1, this.container.clientWidth), height: Math.max(1, this.container.clientHeight) };
+  }
+
+  /**
+   * PNG of the view at `scale` × its CSS size, optionally with a transparent
+   * background. Draws once into a resized drawing buffer and snapshots it in
+   * the same task (toBlob copies the bitmap synchronously).
+   */
+  exportPng(scale: number, transparent: boolean): Promise<Blob> {
+    const { width, height } = this.size;
+    const gl = this.renderer.getContext();
+    const maxSize = Math.min(this.renderer.capabilities.maxTextureSize, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE));
+    if (width * scale > maxSize || height * scale > maxSize) {
+      return Promise.reject(
+        new Error(
+          `A ×${scale} image would be ${width * scale}×${height * scale} pixels; this GPU draws at most ${maxSize}×${maxSize}.`,
+        ),
+      );
+    }
+    const pixelRatio = this.renderer.getPixelRatio();
+    const blob = new Promise<Blob>((resolve, reject) => {
+      this.renderer.setPixelRatio(scale);
+      this.renderer.setSize(width, height, false);
+      if (transparent) this.renderer.setClearAlpha(0);
+      this.renderer.render(this.scene, this.camera);
+      this.canvas.toBlob(
+        (b) => (b ? resolve(b) : reject(new Error('The browser could not encode the PNG.'))),
+        'image/png',
+      );
+      this.renderer.setClearAlpha(1);
+      this.renderer.setPixelRatio(pixelRatio);
+      this.renderer.setSize(width, height, false);
+      this.render();
+    });
+    return blob;
+  }
+
+  /** Stops drawing and frees the renderer, materials and helpers (not the caller's LevelGraphics). */
+  dispose(): void {
+    cancelAnimationFrame(this.frame);
+    this.resizeObserver.disconnect();
+    this.controls.dispose();
+    this.setBoundingBox(null, null);
+    this.smoothMaterial.dispose();
+    this.flatMaterial.dispose();
+    (this.edgeLines.material as LineBasicMaterial).dispose();
+    (this.controlLines.material as LineBasicMaterial).dispose();
+    this.renderer.dispose();
+    this.canvas.remove();
+  }
+
+  private applyVisibility(): void {
+    const hasLevel = this.surface.userData.hasLevel === true;
+    this.surface.visible = hasLevel && this.mode !== 'wireframe';
+    this.edgeLines.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
+    this.controlLines.visible = this.controlLines.userData.hasLevel === true && this.overlay('control');
+    if (this.bboxHelper) this.bboxHelper.visible = this.overlay('bbox');
+    this.dirty = true;
+  }
+
+  private resize(): void {
+    const { width, height } = this.size;
+    this.renderer.setSize(width, height, false);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    this.controls.handleResize();
+    this.render();
+  }
+
+  /** Near and far planes that follow the camera distance, so zooming never clips the model. */
+  private updateClipping(): void {
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    this.camera.near = Math.max(distance * 0.005, this.radius * 1e-4);
+    this.camera.far = 2 * distance + 4 * this.radius;
+    this.camera.updateProjectionMatrix();
+  }
+}

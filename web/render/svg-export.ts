@@ -1,0 +1,132 @@
+/**
+ * SVG of the current view, drawn as a painter would: the polygons that face
+ * the camera, sorted back to front by their centroid's depth, each filled
+ * with a flat Lambert shade and stroked with its edges, then the control-mesh
+ * overlay on top. Polygons stay polygons (one <polygon> per face). three's
+ * SVGRenderer draws triangles, so the projection is done here.
+ */
+import { Color, type PerspectiveCamera, Vector3 } from 'three';
+import type { Mesh } from '../core/mesh';
+import { LIGHT_IN_CAMERA, LIGHT_SHARES, VIEW_COLORS } from './scene-view';
+
+export interface SvgExportInput {
+  /** The level shown. */
+  mesh: Mesh;
+  camera: PerspectiveCamera;
+  /** Size of the view in CSS pixels (the SVG's viewBox). */
+  width: number;
+  height: number;
+  /** Level-0 positions and polygon edges, when the control-mesh overlay is shown. */
+  control?: { positions: ArrayLike<number>; edges: ArrayLike<number> } | null;
+  /** Fill the background (false: transparent). */
+  background: boolean;
+}
+
+/** Number formatting: two decimals are sub-pixel at any export size. */
+function n(x: number): string {
+  return (Math.round(x * 100) / 100).toString();
+}
+
+/** True when the camera sees the front of a face with normal `normal` and centroid `centroid`. */
+export function facesCamera(camera: PerspectiveCamera, centroid: Vector3, normal: Vector3): boolean {
+  return new Vector3().subVectors(camera.position, centroid).dot(normal) > 0;
+}
+
+export function exportSvg(input: SvgExportInput): string {
+  const { mesh, camera, width, height } = input;
+  camera.updateMatrixWorld();
+  const positions = mesh.positions;
+  const vertexCount = positions.length / 3;
+
+  // Project every vertex once: screen x, y and view-space depth.
+  const screen = new Float64Array(vertexCount * 2);
+  const behind = new Uint8Array(vertexCount);
+  const v = new Vector3();
+  const viewMatrix = camera.matrixWorldInverse;
+  for (let i = 0; i < vertexCount; i++) {
+    v.set(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+    const viewZ = v.clone().applyMatrix4(viewMatrix).z;
+    behind[i] = viewZ > -camera.near ? 1 : 0;
+    v.project(camera);
+    screen[2 * i] = ((v.x + 1) / 2) * width;
+    screen[2 * i + 1] = ((1 - v.y) / 2) * height;
+  }
+
+  const lightDir = LIGHT_IN_CAMERA.clone().applyQuaternion(camera.quaternion).normalize();
+  const base = new Color(VIEW_COLORS.surface);
+  const viewDir = new Vector3();
+  camera.getWorldDirection(viewDir);
+
+  interface Face {
+    depth: number;
+    points: string;
+    fill: string;
+  }
+  const faces: Face[] = [];
+  const normal = new Vector3();
+  const centroid = new Vector3();
+  const shaded = new Color();
+  let offset = 0;
+  for (const size of mesh.faceSizes) {
+    const corners = mesh.faceIndices.subarray(offset, offset + size);
+    offset += size;
+    // Newell's normal: exact for planar polygons, a good average otherwise.
+    normal.set(0, 0, 0);
+    centroid.set(0, 0, 0);
+    let clipped = false;
+    for (let k = 0; k < size; k++) {
+      const a = corners[k];
+      const b = corners[(k + 1) % size];
+      const [ax, ay, az] = [positions[3 * a], positions[3 * a + 1], positions[3 * a + 2]];
+      const [bx, by, bz] = [positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]];
+      normal.x += (ay - by) * (az + bz);
+      normal.y += (az - bz) * (ax + bx);
+      normal.z += (ax - bx) * (ay + by);
+      centroid.x += ax;
+      centroid.y += ay;
+      centroid.z += az;
+      if (behind[a]) clipped = true;
+    }
+    centroid.divideScalar(size);
+    if (clipped || normal.lengthSq() === 0 || !facesCamera(camera, centroid, normal)) continue;
+    normal.normalize();
+    const shade = LIGHT_SHARES.ambient + LIGHT_SHARES.directional * Math.max(0, normal.dot(lightDir));
+    shaded.copy(base).multiplyScalar(Math.min(shade, 1));
+    const points: string[] = [];
+    for (const c of corners) points.push(`${n(screen[2 * c])},${n(screen[2 * c + 1])}`);
+    const depth = new Vector3().subVectors(centroid, camera.position).dot(viewDir);
+    faces.push({ depth, points: points.join(' '), fill: `#${shaded.getHexString()}` });
+  }
+  faces.sort((a, b) => b.depth - a.depth);
+
+  const out: string[] = [];
+  out.push(
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}">`,
+  );
+  if (input.background) out.push(`<rect width="${width}" height="${height}" fill="${VIEW_COLORS.background}"/>`);
+  out.push(`<g id="faces" stroke="${VIEW_COLORS.edges}" stroke-width="0.6" stroke-linejoin="round">`);
+  for (const f of faces) out.push(`<polygon points="${f.points}" fill="${f.fill}"/>`);
+  out.push('</g>');
+  if (input.control) out.push(controlPath(input.control, camera, width, height));
+  out.push('</svg>');
+  return `${out.join('\n')}\n`;
+}
+
+/** The control mesh's edges as one path, drawn over the faces. */
+function controlPath(
+  control: { positions: ArrayLike<number>; edges: ArrayLike<number> },
+  camera: PerspectiveCamera,
+  width: number,
+  height: number,
+): string {
+  const v = new Vector3();
+  const project = (i: number): string => {
+    v.set(control.positions[3 * i], control.positions[3 * i + 1], control.positions[3 * i + 2]).project(camera);
+    return `${n(((v.x + 1) / 2) * width)} ${n(((1 - v.y) / 2) * height)}`;
+  };
+  const d: string[] = [];
+  for (let e = 0; e + 1 < control.edges.length; e += 2) {
+    d.push(`M${project(control.edges[e])}L${project(control.edges[e + 1])}`);
+  }
+  return `<path id="control-mesh" fill="none" stroke="${VIEW_COLORS.control}" stroke-width="1.2" d="${d.join('')}"/>`;
+}

@@ -1,0 +1,55 @@
+/** Export: PNG (×1/×2/×4, optional transparent background), copy image, SVG, OFF, OBJ. */
+import type { ViewerState } from '../app/subdiv-viewer';
+import { button, dropdown, el, uniqueId } from './dom';
+
+export interface ExportPanelHandlers {
+  onPng: (scale: number, transparent: boolean) => void;
+  onCopy: (transparent: boolean) => void;
+  onSvg: (transparent: boolean) => void;
+  onMesh: (format: 'off' | 'obj') => void;
+}
+
+export class ExportPanel {
+  readonly element: HTMLElement;
+  private readonly scale: HTMLSelectElement;
+  private readonly transparent: HTMLInputElement;
+  private readonly buttons: HTMLButtonElement[];
+
+  constructor(handlers: ExportPanelHandlers) {
+    const scaleId = uniqueId('png-scale');
+    this.scale = el('select', { testId: 'export.scale', attrs: { id: scaleId } });
+    for (const s of [1, 2, 4]) this.scale.append(el('option', { text: `×${s}`, attrs: { value: String(s) } }));
+    const transparentId = uniqueId('transparent');
+    this.transparent = el('input', { testId: 'export.transparent', attrs: { type: 'checkbox', id: transparentId } });
+    const transparent = () => this.transparent.checked;
+    this.buttons = [
+      button(
+        'PNG',
+        'export.png',
+        () => handlers.onPng(Number(this.scale.value), transparent()),
+        'Save the view as PNG',
+      ),
+      button('Copy image', 'export.copy', () => handlers.onCopy(transparent()), 'Copy the view as PNG (Ctrl+C)'),
+      button('SVG', 'export.svg', () => handlers.onSvg(transparent()), 'Save the view as SVG (polygons)'),
+      button('OFF', 'export.off', () => handlers.onMesh('off'), 'Save the shown level as OFF'),
+      button('OBJ', 'export.obj', () => handlers.onMesh('obj'), 'Save the shown level as OBJ'),
+    ];
+    this.buttons[1].setAttribute('aria-keyshortcuts', 'Control+C');
+    this.element = dropdown(
+      'Export',
+      'export-panel',
+      el(
+        'div',
+        { className: 'row' },
+        el('label', { attrs: { for: scaleId }, text: 'PNG size' }),
+        this.scale,
+        el('label', { className: 'check', attrs: { for: transparentId } }, this.transparent, ' Transparent'),
+      ),
+      el('div', { className: 'row wrap' }, ...this.buttons),
+    );
+  }
+
+  update(state: ViewerState): void {
+    for (const b of this.buttons) b.disabled = state.levelCount === 0;
+  }
+}

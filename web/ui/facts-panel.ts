@@ -1,0 +1,63 @@
+/** Facts of the shown level, as the core computed them. */
+import type { ViewerState } from '../app/subdiv-viewer';
+import type { MeshFacts } from '../core/mesh';
+import { el } from './dom';
+
+const ROWS: readonly { key: string; label: string; value: (f: MeshFacts) => string }[] = [
+  { key: 'vertices', label: 'Vertices', value: (f) => String(f.vertices) },
+  { key: 'edges', label: 'Edges', value: (f) => String(f.edges) },
+  { key: 'faces', label: 'Faces', value: (f) => String(f.faces) },
+  { key: 'components', label: 'Components', value: (f) => String(f.components) },
+  { key: 'boundaries', label: 'Boundaries', value: (f) => String(f.boundaries) },
+  { key: 'euler', label: 'Euler characteristic', value: (f) => String(f.eulerCharacteristic) },
+  { key: 'genus', label: 'Genus', value: (f) => String(f.genus) },
+  { key: 'face-types', label: 'Face types', value: faceTypes },
+];
+
+/** "8 triangles, 18 quads", "6 quads", "1 other". */
+export function faceTypes(f: MeshFacts): string {
+  const parts: string[] = [];
+  const add = (count: number, one: string, many: string) => {
+    if (count > 0) parts.push(`${count} ${count === 1 ? one : many}`);
+  };
+  add(f.triangles, 'triangle', 'triangles');
+  add(f.quads, 'quad', 'quads');
+  add(f.otherFaces, 'other polygon', 'other polygons');
+  return parts.join(', ') || 'none';
+}
+
+export class FactsPanel {
+  readonly element: HTMLElement;
+  private readonly cells = new Map<string, HTMLElement>();
+  private readonly model: HTMLElement;
+  private readonly level: HTMLElement;
+  private readonly time: HTMLElement;
+
+  constructor() {
+    const list = el('dl', { className: 'facts' });
+    const row = (key: string, label: string): HTMLElement => {
+      const dd = el('dd', { testId: `facts.${key}`, text: '–' });
+      list.append(el('dt', { text: label }), dd);
+      return dd;
+    };
+    this.model = row('model', 'Model');
+    this.level = row('level', 'Level');
+    for (const { key, label } of ROWS) this.cells.set(key, row(key, label));
+    this.time = row('time', 'Last step');
+    this.element = el(
+      'section',
+      { testId: 'facts', className: 'facts-panel', attrs: { 'aria-label': 'Facts of the shown level' } },
+      list,
+    );
+  }
+
+  update(state: ViewerState): void {
+    this.model.textContent = state.modelName ?? '–';
+    this.level.textContent = state.levelCount > 0 ? String(state.level) : '–';
+    for (const { key, value } of ROWS) {
+      const cell = this.cells.get(key);
+      if (cell) cell.textContent = state.facts ? value(state.facts) : '–';
+    }
+    this.time.textContent = state.stepMs === null ? '–' : `${state.stepMs.toFixed(1)} ms`;
+  }
+}

@@ -1,0 +1,18 @@
+/** The gallery of sample meshes: one button per sample. */
+import type { Sample } from '../app/samples';
+import { dropdown, el } from './dom';
+
+export function createGallery(samples: readonly Sample[], onPick: (sample: Sample) => void): HTMLElement {
+  const list = el('ul', { className: 'gallery' });
+  for (const sample of samples) {
+    const b = el(
+      'button',
+      { testId: `gallery.${sample.id}`, attrs: { type: 'button', 'aria-label': `Open sample ${sample.label}` } },
+      el('span', { className: 'gallery-label', text: sample.label }),
+      el('span', { className: 'gallery-note', text: sample.note }),
+    );
+    b.addEventListener('click', () => onPick(sample));
+    list.append(el('li', {}, b));
+  }
+  return dropdown('Samples', 'gallery', list);
+}

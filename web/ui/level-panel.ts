@@ -1,0 +1,49 @@
+/** Subdivide (+1 level), Reset, and a scrubber over the computed levels 0..N. */
+import type { ViewerState } from '../app/subdiv-viewer';
+import { button, el, section, uniqueId } from './dom';
+
+export interface LevelPanelHandlers {
+  onSubdivide: () => void;
+  onReset: () => void;
+  onLevel: (level: number) => void;
+}
+
+export class LevelPanel {
+  readonly element: HTMLElement;
+  private readonly subdivide: HTMLButtonElement;
+  private readonly reset: HTMLButtonElement;
+  private readonly range: HTMLInputElement;
+  private readonly label: HTMLOutputElement;
+
+  constructor(handlers: LevelPanelHandlers) {
+    this.subdivide = button('Subdivide', 'controls.subdivide', handlers.onSubdivide, 'Compute one more level (S)');
+    this.subdivide.setAttribute('aria-keyshortcuts', 's');
+    this.reset = button('Reset', 'controls.reset', handlers.onReset, 'Drop computed levels, back to the control mesh');
+    const rangeId = uniqueId('level');
+    this.range = el('input', {
+      testId: 'controls.level',
+      attrs: { type: 'range', min: '0', max: '0', step: '1', value: '0', id: rangeId },
+    });
+    this.range.addEventListener('input', () => handlers.onLevel(Number(this.range.value)));
+    this.label = el('output', { testId: 'controls.level-label', attrs: { for: rangeId, 'aria-live': 'polite' } });
+    this.element = section(
+      'Levels',
+      'level-panel',
+      el('div', { className: 'row' }, this.subdivide, this.reset),
+      el('label', { attrs: { for: rangeId }, text: 'Level' }),
+      el('div', { className: 'row' }, this.range, this.label),
+    );
+  }
+
+  update(state: ViewerState): void {
+    const loaded = state.levelCount > 0;
+    this.subdivide.disabled = !loaded || state.busy !== null;
+    this.reset.disabled = !loaded || state.levelCount < 2;
+    const max = Math.max(0, state.levelCount - 1);
+    this.range.max = String(max);
+    this.range.value = String(state.level);
+    this.range.disabled = max === 0;
+    this.range.setAttribute('aria-valuetext', `Level ${state.level} of ${max}`);
+    this.label.textContent = loaded ? `${state.level} / ${max}` : '–';
+  }
+}

@@ -1,0 +1,81 @@
+/**
+ * Scheme picker: every scheme the core offers, a one-line description, and
+ * for schemes that need triangles a note and a "Triangulate first" option
+ * when the loaded mesh has other faces.
+ */
+import { schemeInfo } from '../app/scheme-info';
+import type { ViewerState } from '../app/subdiv-viewer';
+import type { SchemeName } from '../core/mesh';
+import { el, section, uniqueId } from './dom';
+
+export interface SchemePanelHandlers {
+  onScheme: (scheme: SchemeName) => void;
+  onTriangulate: (triangulate: boolean) => void;
+}
+
+export class SchemePanel {
+  readonly element: HTMLElement;
+  private readonly select: HTMLSelectElement;
+  private readonly description: HTMLElement;
+  private readonly triangles: HTMLElement;
+  private readonly triangleNote: HTMLElement;
+  private readonly triangulate: HTMLInputElement;
+
+  constructor(handlers: SchemePanelHandlers) {
+    const selectId = uniqueId('scheme');
+    const descriptionId = uniqueId('scheme-description');
+    this.select = el('select', {
+      testId: 'controls.scheme',
+      attrs: { id: selectId, 'aria-describedby': descriptionId },
+    });
+    this.select.disabled = true;
+    this.select.append(el('option', { text: 'Loading the core…' }));
+    this.select.addEventListener('change', () => handlers.onScheme(this.select.value as SchemeName));
+    this.description = el('p', {
+      testId: 'controls.scheme-description',
+      className: 'hint',
+      attrs: { id: descriptionId },
+    });
+    const checkboxId = uniqueId('triangulate');
+    this.triangulate = el('input', { testId: 'controls.triangulate', attrs: { type: 'checkbox', id: checkboxId } });
+    this.triangulate.addEventListener('change', () => handlers.onTriangulate(this.triangulate.checked));
+    this.triangleNote = el('p', { testId: 'controls.triangle-note', className: 'note' });
+    this.triangles = el(
+      'div',
+      { className: 'triangulate' },
+      this.triangleNote,
+      el('label', { attrs: { for: checkboxId } }, this.triangulate, ' Triangulate first (CGAL triangulate_faces)'),
+    );
+    this.element = section(
+      'Scheme',
+      'scheme-panel',
+      el('label', { attrs: { for: selectId }, text: 'Subdivision scheme' }),
+      this.select,
+      this.description,
+      this.triangles,
+    );
+  }
+
+  /** Fills the picker with the core's schemes. */
+  setSchemes(names: readonly string[], current: SchemeName): void {
+    this.select.replaceChildren(
+      ...names.map((name) => el('option', { text: schemeInfo(name).label, attrs: { value: name } })),
+    );
+    this.select.value = current;
+    this.select.disabled = false;
+  }
+
+  update(state: ViewerState): void {
+    if (!this.select.disabled && this.select.value !== state.scheme) this.select.value = state.scheme;
+    const info = schemeInfo(state.scheme);
+    this.description.textContent = info.description;
+    this.triangulate.checked = state.triangulate;
+    const facts = state.facts;
+    const others = facts ? facts.quads + facts.otherFaces : 0;
+    const show = info.needsTriangles && others > 0;
+    this.triangles.hidden = !show;
+    this.triangleNote.textContent = show
+      ? `${info.label} needs triangles; this mesh has ${others} other face${others === 1 ? '' : 's'}.`
+      : '';
+  }
+}

@@ -1,0 +1,68 @@
+/** Keyboard shortcuts of the app; ignored while typing in a field or while a dialog is open. */
+
+export interface ShortcutHandlers {
+  subdivide: () => void;
+  cycleRenderMode: () => void;
+  toggleOverlay: (name: 'control' | 'bbox') => void;
+  fit: () => void;
+  stepLevel: (delta: number) => void;
+  open: () => void;
+  cancel: () => void;
+  copyImage: () => void;
+}
+
+/** Shortcut list for the help text and the README. */
+export const SHORTCUTS: readonly { keys: string; action: string }[] = [
+  { keys: 'S', action: 'Subdivide (one more level)' },
+  { keys: '[ / ]', action: 'Previous / next computed level' },
+  { keys: 'R', action: 'Cycle render modes' },
+  { keys: 'C', action: 'Toggle the control-mesh overlay' },
+  { keys: 'B', action: 'Toggle the bounding box' },
+  { keys: 'F', action: 'Fit the view to the model' },
+  { keys: 'O', action: 'Open a file' },
+  { keys: 'Esc', action: 'Cancel a running step' },
+  { keys: 'Ctrl+C', action: 'Copy the view as PNG' },
+];
+
+function isTyping(target: EventTarget | null): boolean {
+  if (!(target instanceof HTMLElement)) return false;
+  if (target.isContentEditable || target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement) {
+    return true;
+  }
+  if (target instanceof HTMLInputElement) {
+    return !['checkbox', 'radio', 'range', 'button', 'submit', 'reset', 'file'].includes(target.type);
+  }
+  return false;
+}
+
+/** Installs the shortcuts on `root`; returns the function that removes them. */
+export function installShortcuts(root: Document, handlers: ShortcutHandlers, blocked: () => boolean): () => void {
+  const onKeyDown = (event: KeyboardEvent) => {
+    if (event.defaultPrevented || isTyping(event.target) || blocked()) return;
+    if ((event.ctrlKey || event.metaKey) && !event.altKey && event.key.toLowerCase() === 'c') {
+      // Leave Ctrl+C alone when the user selected text to copy.
+      if (root.getSelection()?.toString()) return;
+      event.preventDefault();
+      handlers.copyImage();
+      return;
+    }
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    const action: Record<string, () => void> = {
+      s: handlers.subdivide,
+      r: handlers.cycleRenderMode,
+      c: () => handlers.toggleOverlay('control'),
+      b: () => handlers.toggleOverlay('bbox'),
+      f: handlers.fit,
+      '[': () => handlers.stepLevel(-1),
+      ']': () => handlers.stepLevel(1),
+      o: handlers.open,
+      Escape: handlers.cancel,
+    };
+    const run = action[event.key.length === 1 ? event.key.toLowerCase() : event.key];
+    if (!run) return;
+    event.preventDefault();
+    run();
+  };
+  root.addEventListener('keydown', onKeyDown);
+  return () => root.removeEventListener('keydown', onKeyDown);
+}
