@@ -1,0 +1,170 @@
+/**
+ * Render modes and overlays change what is drawn; exports (PNG, SVG, OFF,
+ * OBJ) are checked by reading the files back.
+ */
+import { readFileSync } from 'node:fs';
+import { readFile } from 'node:fs/promises';
+import { expect, test } from './fixtures';
+import { cameraFacingFaces, edgeCount, PNG_SIGNATURE, readOff, readPng } from './helpers';
+
+const CUBE = readFileSync('public/meshes/cube.off', 'utf8');
+
+test('render modes, the control-mesh overlay and the bounding box change the picture', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await app.subdivide();
+  await app.subdivide();
+  const shots = new Map<string, Buffer>();
+  for (const mode of ['smooth', 'flat', 'edges', 'wireframe']) {
+    await test.step(`mode ${mode}`, async () => {
+      await app.byTestId('controls.render-mode').selectOption(mode);
+      expect((await app.state()).renderMode).toBe(mode);
+      shots.set(mode, await app.canvasPixels());
+    });
+  }
+  const modes = [...shots.keys()];
+  for (let i = 0; i < modes.length; i++) {
+    for (let j = i + 1; j < modes.length; j++) {
+      expect(shots.get(modes[i])?.equals(shots.get(modes[j]) as Buffer), `${modes[i]} vs ${modes[j]}`).toBe(false);
+    }
+  }
+  await test.step('key r cycles the modes', async () => {
+    await app.page.locator('body').click({ position: { x: 5, y: 690 } });
+    await app.page.keyboard.press('r');
+    expect((await app.state()).renderMode).toBe('smooth');
+    await app.page.keyboard.press('r');
+    expect((await app.state()).renderMode).toBe('flat');
+    expect((await app.canvasPixels()).equals(shots.get('flat') as Buffer)).toBe(true);
+  });
+  await test.step('control-mesh overlay', async () => {
+    await app.byTestId('controls.overlay-control').check();
+    expect((await app.state()).overlays.control).toBe(true);
+    const withOverlay = await app.canvasPixels();
+    expect(withOverlay.equals(shots.get('flat') as Buffer)).toBe(false);
+    await app.byTestId('controls.render-mode').selectOption('edges');
+    await app.snapshot('03-subdivided-overlay');
+  });
+  await test.step('bounding box', async () => {
+    const before = await app.canvasPixels();
+    await app.page.keyboard.press('b');
+    expect((await app.state()).overlays.bbox).toBe(true);
+    expect((await app.canvasPixels()).equals(before)).toBe(false);
+  });
+});
+
+test('PNG export: signature, ×2 doubles the size, transparent background', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await app.subdivide();
+  const size = await app.byTestId('viewer').evaluate((e) => [e.clientWidth, e.clientHeight]);
+  await app.byTestId('export-panel').locator('summary').click();
+  const one = await app.download('export.png');
+  expect(one.suggestedFilename()).toBe('cube-catmull-clark-L1.png');
+  const png1 = await readFile(await one.path());
+  expect(png1.subarray(0, 8).equals(PNG_SIGNATURE)).toBe(true);
+  const info1 = readPng(png1);
+  expect([info1.width, info1.height]).toEqual(size);
+  expect(info1.pixel(2, 2)[3]).toBe(255);
+
+  await app.byTestId('export-panel').locator('summary').click();
+  await app.byTestId('export.scale').selectOption('2');
+  await app.byTestId('export.transparent').check();
+  const two = await app.download('export.png');
+  const info2 = readPng(await readFile(await two.path()));
+  expect([info2.width, info2.height]).toEqual([2 * size[0], 2 * size[1]]);
+  expect(info2.pixel(2, 2)[3]).toBe(0);
+  // The model in the middle stays opaque.
+  expect(info2.pixel(size[0], size[1])[3]).toBe(255);
+});
+
+test('SVG export: one polygon per camera-facing face, back to front, viewBox set', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  const cube = readOff(CUBE);
+
+  const svgOf = async (testId = 'export.svg') => {
+    await app.byTestId('export-panel').locator('summary').click();
+    const download = await app.download(testId);
+    const text = await readFile(await download.path(), 'utf8');
+    // Parse it as the browser does.
+    const parsed = await app.page.evaluate((svg) => {
+      const doc = new DOMParser().parseFromString(svg, 'image/svg+xml');
+      const root = doc.documentElement;
+      return {
+        rootName: root.nodeName,
+        parseError: doc.querySelector('parsererror') !== null,
+        viewBox: root.getAttribute('viewBox'),
+        polygons: doc.querySelectorAll('polygon').length,
+        control: doc.querySelector('#control-mesh')?.getAttribute('d')?.split('M').length ?? 0,
+      };
+    }, text);
+    return { name: download.suggestedFilename(), ...parsed };
+  };
+
+  await test.step('default view of the cube: three faces', async () => {
+    const state = await app.state();
+    const expected = cameraFacingFaces(cube, state.view.position);
+    expect(expected).toBe(3);
+    const svg = await svgOf();
+    expect(svg).toMatchObject({ rootName: 'svg', parseError: false, polygons: expected, control: 0 });
+    const size = await app.byTestId('viewer').evaluate((e) => `0 0 ${e.clientWidth} ${e.clientHeight}`);
+    expect(svg.viewBox).toBe(size);
+    expect(svg.name).toBe('cube-catmull-clark-L0.svg');
+  });
+
+  await test.step('front view (saved view restored): one face', async () => {
+    await app.page.evaluate(() =>
+      localStorage.setItem('subdivlab.view', JSON.stringify({ position: [0, 0, 9], target: [0, 0, 0], up: [0, 1, 0] })),
+    );
+    await app.page.reload();
+    await app.open();
+    await app.load('cube.off', CUBE);
+    await app.byTestId('view.restore').click();
+    await expect.poll(async () => (await app.state()).view.position).toEqual([0, 0, 9]);
+    expect(cameraFacingFaces(cube, [0, 0, 9])).toBe(1);
+    expect((await svgOf()).polygons).toBe(1);
+  });
+
+  await test.step('level 2 with the control mesh: faces counted from the exported OFF', async () => {
+    await app.byTestId('view.fit').click();
+    await app.subdivide();
+    await app.subdivide();
+    await app.byTestId('controls.overlay-control').check();
+    await app.byTestId('export-panel').locator('summary').click();
+    const off = readOff(await readFile(await (await app.download('export.off')).path(), 'utf8'));
+    const expected = cameraFacingFaces(off, (await app.state()).view.position);
+    const svg = await svgOf();
+    expect(svg.polygons).toBe(expected);
+    expect(expected).toBeGreaterThan(20);
+    expect(expected).toBeLessThan(96);
+    // One move-to per control edge (the leading empty split part counts as the 13th).
+    expect(svg.control).toBe(12 + 1);
+  });
+});
+
+test('OFF and OBJ export of the current level; importing the OFF gives the same counts', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await app.subdivide();
+  await app.subdivide();
+  const level2 = await app.facts();
+  await app.byTestId('export-panel').locator('summary').click();
+  const offDownload = await app.download('export.off');
+  expect(offDownload.suggestedFilename()).toBe('cube-catmull-clark-L2.off');
+  const offText = await readFile(await offDownload.path(), 'utf8');
+  const off = readOff(offText);
+  expect([off.positions.length, edgeCount(off), off.faces.length]).toEqual([98, 192, 96]);
+
+  await app.byTestId('export-panel').locator('summary').click();
+  const objDownload = await app.download('export.obj');
+  expect(objDownload.suggestedFilename()).toBe('cube-catmull-clark-L2.obj');
+  const objText = await readFile(await objDownload.path(), 'utf8');
+  expect(objText.split('\n').filter((l) => l.startsWith('v ')).length).toBe(98);
+  expect(objText.split('\n').filter((l) => l.startsWith('f ')).length).toBe(96);
+
+  await test.step('drop the exported OFF: same counts at level 0', async () => {
+    await app.load('cube-catmull-clark-L2.off', offText);
+    expect(await app.facts()).toEqual(level2);
+    expect((await app.state()).level).toBe(0);
+  });
+});
