@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "custom_rules.h"
 #include "mesh_types.h"
 
 namespace subdivlab {
@@ -24,6 +25,11 @@ struct Subdivide_options {
   /// Status_code::too_large before anything is allocated. 0 = default
   /// (3.5 GB under WebAssembly's 4 GB, unlimited natively).
   std::size_t memory_limit_bytes = 0;
+  /// quad-triangle: border vertices follow the cubic B-spline border rule
+  /// (true) or stay on the control border polygon (false).
+  bool smooth_boundary = true;
+  /// custom: the host and the mask weights (custom_rules.h).
+  Custom_rules custom;
 };
 
 /// Counts predicted for a mesh after `levels` steps of a scheme, and the

@@ -1,0 +1,94 @@
+#include "control_edges.h"
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include "custom_rules.h"
+
+namespace subdivlab {
+namespace {
+
+Mesh::Vertex_index vertex(std::uint32_t i) { return Mesh::Vertex_index(i); }
+
+}  // namespace
+
+bool scheme_keeps_control_edges(const Subdivide_options& o) {
+  const std::string& s = o.scheme;
+  if (s == "catmull-clark" || s == "loop" || s == "quad-triangle" || s == "linear" ||
+      s == "linear-tri")
+    return true;
+  return s == "custom" && custom_rules_are_primal(o.custom);
+}
+
+Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& mesh,
+                                            int start_level) {
+  Result<Control_edges> r;
+  if (in.control_edges.empty()) {
+    if (start_level != 0) return r;
+    r.value.reserve(mesh.number_of_edges());
+    for (Mesh::Edge_index e : mesh.edges()) {
+      const Mesh::Halfedge_index h = mesh.halfedge(e);
+      r.value.emplace_back(mesh.source(h).idx(), mesh.target(h).idx());
+    }
+    return r;
+  }
+  auto fail = [&](const std::string& m) {
+    r.status = Status::error(Status_code::invalid_argument, m);
+    r.value.clear();
+    return r;
+  };
+  if (in.control_edges.size() % 2 != 0)
+    return fail("control edges must come in pairs of vertex indices (got " +
+                std::to_string(in.control_edges.size()) + " numbers)");
+  // build_mesh numbers the vertices that faces use, in their buffer order.
+  const std::size_t nv = in.vertex_count();
+  std::vector<std::uint32_t> rank(nv, 0xffffffffu);
+  for (std::uint32_t v : in.face_indices)
+    if (v < nv) rank[v] = 0;
+  std::uint32_t next = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (rank[v] == 0) rank[v] = next++;
+  r.value.reserve(in.control_edges.size() / 2);
+  for (std::size_t i = 0; i < in.control_edges.size(); i += 2) {
+    const std::uint32_t a = in.control_edges[i], b = in.control_edges[i + 1];
+    const std::string name = "control edge " + std::to_string(i / 2) + " (" + std::to_string(a) +
+                             ", " + std::to_string(b) + ")";
+    if (a >= nv || b >= nv || rank[a] == 0xffffffffu || rank[b] == 0xffffffffu)
+      return fail(name + " names a vertex that is not in the mesh");
+    if (mesh.halfedge(vertex(rank[a]), vertex(rank[b])) == Mesh::null_halfedge())
+      return fail(name + " is not an edge of the mesh");
+    r.value.emplace_back(rank[a], rank[b]);
+  }
+  return r;
+}
+
+Control_edges refine_control_edges(const Mesh& refined, std::uint32_t old_vertex_end,
+                                   const Control_edges& parents) {
+  Control_edges children;
+  children.reserve(2 * parents.size());
+  for (const auto& [a, b] : parents) {
+    const Mesh::Vertex_index va = vertex(a), vb = vertex(b);
+    for (Mesh::Vertex_index m : CGAL::vertices_around_target(refined.halfedge(va), refined)) {
+      if (m.idx() < old_vertex_end) continue;
+      if (refined.halfedge(m, vb) == Mesh::null_halfedge()) continue;
+      children.emplace_back(a, m.idx());
+      children.emplace_back(m.idx(), b);
+      break;
+    }
+  }
+  return children;
+}
+
+std::vector<std::uint32_t> control_edges_to_buffers(const Mesh& mesh, const Control_edges& edges) {
+  std::vector<std::uint32_t> number(mesh.num_vertices(), 0xffffffffu);
+  std::uint32_t n = 0;
+  for (Mesh::Vertex_index v : mesh.vertices()) number[v.idx()] = n++;
+  std::vector<std::uint32_t> out;
+  out.reserve(2 * edges.size());
+  for (const auto& [a, b] : edges) {
+    out.push_back(number[a]);
+    out.push_back(number[b]);
+  }
+  return out;
+}
+
+}  // namespace subdivlab

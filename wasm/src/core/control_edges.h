@@ -1,0 +1,47 @@
+// Control edges: the edges of the level-0 (control) mesh, followed through
+// the refinement. Every edge of a refined mesh that lies on a control edge is
+// marked; after a primal step the two halves of a marked edge are marked.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mesh_types.h"
+#include "subdivide.h"
+
+namespace subdivlab {
+
+/// Marked edges as pairs of Surface_mesh vertex indices.
+using Control_edges = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+/// Whether `options` names a primal scheme whose host keeps the old vertex
+/// indices first and splits every edge at one new vertex: catmull-clark,
+/// loop, quad-triangle, linear, linear-tri, and custom on the pqq or ptq
+/// host. Other schemes (doo-sabin, sqrt3, custom on dqq or sqrt3) drop the
+/// marks.
+bool scheme_keeps_control_edges(const Subdivide_options& options);
+
+/// Control edges of `mesh` (built by build_mesh from `in`) at the start of a
+/// subdivision: `in.control_edges` mapped to mesh vertex indices (build_mesh
+/// drops isolated vertices), or every edge of the mesh when
+/// `in.control_edges` is empty and `start_level` is 0, or none.
+/// Fails with invalid_argument when the pairs are odd in number, out of
+/// range, or not edges of the mesh.
+Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& mesh,
+                                            int start_level);
+
+/// The children of `parents` after one primal step on `refined`, where the
+/// vertices of the coarse mesh kept their indices and every index from
+/// `old_vertex_end` on is new: the child edges of (a, b) are (a, m) and
+/// (m, b), m the new vertex adjacent to both. Parents without such an m
+/// (which a primal host never produces) are dropped.
+Control_edges refine_control_edges(const Mesh& refined, std::uint32_t old_vertex_end,
+                                   const Control_edges& parents);
+
+/// The pairs as Mesh_buffers::control_edges, numbered as to_buffers numbers
+/// the vertices (iteration order).
+std::vector<std::uint32_t> control_edges_to_buffers(const Mesh& mesh, const Control_edges& edges);
+
+}  // namespace subdivlab
