@@ -10,10 +10,18 @@ import { init } from './subdiv-core';
 
 const WASM_NAME = 'subdivlab.wasm';
 
-/** Where the .wasm may be: beside this source file, or from the CLI bundle in build/cli/. */
+/**
+ * Where the .wasm may be: beside this source file (vitest), or, from a bundle
+ * somewhere under build/, in the repository's web/core/generated/.
+ */
 function wasmCandidates(): string[] {
-  const here = dirname(fileURLToPath(import.meta.url));
-  return [join(here, 'generated', WASM_NAME), join(here, '..', '..', 'web', 'core', 'generated', WASM_NAME)];
+  let dir = dirname(fileURLToPath(import.meta.url));
+  const candidates = [join(dir, 'generated', WASM_NAME)];
+  for (let up = 0; up < 4; up++) {
+    dir = dirname(dir);
+    candidates.push(join(dir, 'web', 'core', 'generated', WASM_NAME));
+  }
+  return candidates;
 }
 
 /**

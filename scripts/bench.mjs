@@ -1,0 +1,89 @@
+#!/usr/bin/env node
+// `npm run bench` (after setup.mjs): one level of each scheme on a real mesh
+// of about 100k faces, natively (build/native/subdiv_bench_native, from
+// wasm/bench/bench_native.cpp) and in Node through the WASM module
+// (build/cli/bench-wasm.mjs), from the same C++ core. Prints the median of
+// RUNS timed runs (after one warm-up) and the WASM/native ratio per scheme,
+// and writes build/bench.json.
+// Usage: node scripts/bench.mjs [MESH.off] [--runs N]
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { cpus } from 'node:os';
+import { basename, dirname, join } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const SCHEMES = ['catmull-clark', 'loop', 'doo-sabin', 'sqrt3'];
+
+const argv = process.argv.slice(2);
+const runsAt = argv.indexOf('--runs');
+const runs = runsAt >= 0 ? Number(argv.splice(runsAt, 2)[1]) : 5;
+const meshPath = argv[0] ?? join(root, 'public', 'meshes', 'cgal', 'bunny00.off');
+if (!existsSync(meshPath)) {
+  console.error(`error: ${meshPath} not found; run node scripts/setup.mjs (it extracts CGAL's bunny00.off)`);
+  process.exit(1);
+}
+
+function run(cmd, args) {
+  const r = spawnSync(cmd, args, { cwd: root, stdio: ['ignore', 'pipe', 'inherit'], encoding: 'utf8' });
+  if (r.status !== 0) {
+    console.error(`error: ${cmd} ${args.join(' ')} failed with status ${r.status}`);
+    process.exit(1);
+  }
+  return r.stdout;
+}
+
+// The native benchmark, built Release in build/native like the tests.
+const buildDir = join(root, 'build', 'native');
+if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
+  run('cmake', ['-S', 'wasm', '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']);
+}
+console.log('[bench] building subdiv_bench_native (Release)');
+run('cmake', ['--build', buildDir, '--parallel', '2', '--target', 'subdiv_bench_native']);
+
+const header = readFileSync(meshPath, 'utf8').split('\n', 4).join(' ');
+console.log(`[bench] ${basename(meshPath)} (${header.replace(/\s+/g, ' ').slice(0, 60)}...), ${runs} runs per scheme`);
+
+console.log('[bench] native ...');
+const native = run(join(buildDir, 'subdiv_bench_native'), [meshPath, String(runs), ...SCHEMES])
+  .trim()
+  .split('\n')
+  .map((line) => JSON.parse(line));
+
+console.log('[bench] WASM in Node ...');
+const wasmBundle = join(root, 'build', 'cli', 'bench-wasm.mjs');
+if (!existsSync(wasmBundle)) {
+  console.error('error: build/cli/bench-wasm.mjs missing; run node scripts/setup.mjs');
+  process.exit(1);
+}
+const { benchWasm } = await import(pathToFileURL(wasmBundle).href);
+const wasm = await benchWasm(meshPath, runs, SCHEMES);
+
+const rows = SCHEMES.map((scheme) => {
+  const n = native.find((r) => r.scheme === scheme);
+  const w = wasm.find((r) => r.scheme === scheme);
+  if (n.faces !== w.faces) {
+    console.error(`error: ${scheme}: native gives ${n.faces} faces, WASM ${w.faces}`);
+    process.exit(1);
+  }
+  return { scheme, faces: n.faces, wasm_ms: w.median_ms, native_ms: n.median_ms, ratio: w.median_ms / n.median_ms };
+});
+
+const pad = (s, n) => String(s).padEnd(n);
+const num = (x, n) => x.toFixed(n).padStart(10);
+console.log(
+  `\n${pad('scheme', 15)}${'faces out'.padStart(10)}${'WASM ms'.padStart(10)}${'native ms'.padStart(10)}${'ratio'.padStart(10)}`,
+);
+for (const r of rows) {
+  console.log(
+    `${pad(r.scheme, 15)}${String(r.faces).padStart(10)}${num(r.wasm_ms, 1)}${num(r.native_ms, 1)}${num(r.ratio, 2)}`,
+  );
+}
+const machine = `${cpus()[0]?.model ?? 'unknown CPU'}, ${cpus().length} cores, Node ${process.version}`;
+console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);
+
+mkdirSync(join(root, 'build'), { recursive: true });
+writeFileSync(
+  join(root, 'build', 'bench.json'),
+  `${JSON.stringify({ mesh: basename(meshPath), runs, machine, rows, native, wasm }, null, 2)}\n`,
+);

@@ -1,0 +1,81 @@
+// Native side of `npm run bench`: times one subdivision step of each scheme on
+// a mesh with the same C++ core the WASM module is built from, and prints one
+// JSON object per scheme (scheme, faces, median_ms, runs_ms) on stdout.
+// Usage: subdiv_bench_native MESH.off [RUNS] [SCHEME...]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/mesh_io.h"
+#include "core/subdivide.h"
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace subdivlab;
+  if (argc < 2) {
+    std::cerr << "usage: subdiv_bench_native MESH.off [RUNS] [SCHEME...]\n";
+    return 2;
+  }
+  const std::string path = argv[1];
+  const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
+  std::vector<std::string> schemes;
+  for (int i = 3; i < argc; ++i) schemes.push_back(argv[i]);
+  if (schemes.empty()) schemes = {"catmull-clark", "loop", "doo-sabin", "sqrt3"};
+
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    std::cerr << "error: " << path << ": cannot read\n";
+    return 1;
+  }
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string name = path.substr(path.find_last_of('/') + 1);
+  const Mesh_format format =
+      name.size() > 4 && name.substr(name.size() - 4) == ".obj" ? Mesh_format::obj : Mesh_format::off;
+  const Result<Mesh_buffers> mesh = read_mesh(text.str(), format);
+  if (!mesh.ok()) {
+    std::cerr << "error: " << path << ": " << mesh.status.message << "\n";
+    return 1;
+  }
+
+  for (const std::string& scheme : schemes) {
+    Subdivide_options options;
+    options.scheme = scheme;
+    options.levels = 1;
+    std::vector<double> times;
+    std::size_t faces = 0;
+    // One untimed warm-up run, then `runs` timed ones.
+    for (int r = 0; r <= runs; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      const Result<Mesh_buffers> out = subdivide_mesh(mesh.value, options);
+      const auto stop = std::chrono::steady_clock::now();
+      if (!out.ok()) {
+        std::cerr << "error: " << scheme << ": " << out.status.message << "\n";
+        return 1;
+      }
+      faces = out.value.face_count();
+      if (r > 0) times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+    }
+    std::printf("{\"scheme\":\"%s\",\"faces\":%zu,\"median_ms\":%.3f,\"runs_ms\":[", scheme.c_str(), faces,
+                median(times));
+    for (std::size_t i = 0; i < times.size(); ++i) std::printf("%s%.3f", i ? "," : "", times[i]);
+    std::printf("]}\n");
+    std::fflush(stdout);
+  }
+  return 0;
+}
