@@ -49,9 +49,10 @@ export class AppShell {
   constructor(root: HTMLElement) {
     this.fileInput = el('input', {
       testId: 'open.input',
-      className: 'visually-hidden',
-      attrs: { type: 'file', accept: '.off,.obj,text/plain', tabindex: '-1', 'aria-hidden': 'true' },
+      attrs: { type: 'file', accept: '.off,.obj,text/plain', 'aria-label': 'Open a mesh file' },
     });
+    // The Open… button is the visible, focusable control; the input only opens the picker.
+    this.fileInput.hidden = true;
     this.fileInput.addEventListener('change', () => {
       const file = this.fileInput.files?.[0];
       this.fileInput.value = '';

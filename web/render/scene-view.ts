@@ -105,6 +105,9 @@ export class SceneView {
     this.controls.rotateSpeed = 3;
     this.controls.zoomSpeed = 1.2;
     this.controls.panSpeed = 0.8;
+    // No inertia: a view stops where the user leaves it, so saved views restore exactly
+    // and nothing keeps redrawing afterwards.
+    this.controls.staticMoving = true;
     // The app uses S for Subdivide; trackball's hold-a-key drag modes would steal A/S/D.
     this.controls.keys = ['', '', ''];
     this.controls.addEventListener('change', () => {

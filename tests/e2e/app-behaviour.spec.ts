@@ -1,0 +1,243 @@
+/**
+ * The rest of the user's day: samples, ?src=, the large-step question, a
+ * long step with progress and Cancel, the camera, saved views, shortcuts,
+ * the clipboard, accessibility and the layout on a laptop and a tablet.
+ */
+import { readFileSync } from 'node:fs';
+import { expect, test } from './fixtures';
+import { quadGridOff } from './helpers';
+
+const CUBE = readFileSync('public/meshes/cube.off', 'utf8');
+
+test('the gallery opens sample meshes', async ({ app }) => {
+  await app.open();
+  const pick = async (id: string, name: string) => {
+    await app.byTestId('gallery').locator('summary').click();
+    await app.byTestId(`gallery.${id}`).click();
+    await expect(app.byTestId('facts.model')).toHaveText(name);
+    await app.idle();
+    return app.facts();
+  };
+  expect(await pick('rhombicuboctahedron', 'rhombicuboctahedron.off')).toMatchObject({
+    vertices: 24,
+    edges: 48,
+    faces: 26,
+    genus: 0,
+    faceTypes: '8 triangles, 18 quads',
+  });
+  expect(await pick('open-grid', 'open-grid.off')).toMatchObject({ vertices: 16, faces: 9, boundaries: 1 });
+  expect(await pick('torus', 'torus.off')).toMatchObject({ genus: 1, boundaries: 0, components: 1 });
+  const grid = await pick('open-grid', 'open-grid.off');
+  // Catmull-Clark on the open 3×3 grid: a 6×6 grid, then 12×12.
+  await app.subdivide();
+  expect(await app.facts()).toMatchObject({ vertices: 49, edges: 84, faces: 36, boundaries: grid.boundaries });
+  await app.subdivide();
+  expect(await app.facts()).toMatchObject({ vertices: 169, edges: 312, faces: 144, boundaries: 1 });
+});
+
+test('Open… and the O key open the file picker', async ({ app }) => {
+  await app.open();
+  const [chooser] = await Promise.all([app.page.waitForEvent('filechooser'), app.byTestId('open.button').click()]);
+  await chooser.setFiles({ name: 'cube.off', mimeType: 'text/plain', buffer: Buffer.from(CUBE) });
+  await expect(app.byTestId('facts.model')).toHaveText('cube.off');
+  expect((await app.facts()).faces).toBe(6);
+  const [again] = await Promise.all([app.page.waitForEvent('filechooser'), app.page.keyboard.press('o')]);
+  await again.setFiles('public/meshes/icosahedron.off');
+  await expect(app.byTestId('facts.model')).toHaveText('icosahedron.off');
+  expect(await app.facts()).toMatchObject({ vertices: 12, edges: 30, faces: 20 });
+});
+
+test('?src= loads http(s) URLs and refuses other schemes with a message', async ({ app }) => {
+  await test.step('relative http URL', async () => {
+    await app.open('?src=meshes/octahedron.off');
+    await expect(app.byTestId('facts.model')).toHaveText('octahedron.off');
+    expect(await app.facts()).toMatchObject({ vertices: 6, edges: 12, faces: 8, faceTypes: '8 triangles' });
+  });
+  for (const src of ['file:///etc/passwd', 'javascript:alert(1)']) {
+    await test.step(src, async () => {
+      await app.open(`?src=${encodeURIComponent(src)}`);
+      await expect(app.errorBanner).toBeVisible();
+      await expect(app.byTestId('error.source')).toHaveText(`${src}: `);
+      await expect(app.byTestId('error.message')).toContainText('Only http and https URLs');
+      expect((await app.state()).levelCount).toBe(0);
+    });
+  }
+});
+
+test('a step over the memory budget asks first, in the page', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await app.page.evaluate(() => window.__subdivlab?.setMemoryBudget(1000));
+  await app.byTestId('controls.subdivide').click();
+  const dialog = app.byTestId('confirm.dialog');
+  await expect(dialog).toBeVisible();
+  await expect(app.byTestId('confirm.message')).toContainText('level 1 would have 26 vertices and 24 faces');
+  await app.byTestId('confirm.cancel').click();
+  await expect(dialog).toBeHidden();
+  expect(await app.state()).toMatchObject({ level: 0, levelCount: 1 });
+
+  await app.byTestId('controls.subdivide').click();
+  await app.byTestId('confirm.ok').click();
+  await expect.poll(async () => (await app.state()).level).toBe(1);
+  expect((await app.facts()).faces).toBe(24);
+});
+
+test('a long step shows progress, keeps the page responsive and can be cancelled', async ({ app }) => {
+  test.setTimeout(120_000);
+  await app.open();
+  // 250 000 quads: Catmull-Clark level 1 takes about a second in WebAssembly.
+  await app.load('grid-500.off', quadGridOff(500));
+  await app.byTestId('controls.subdivide').click();
+  await expect(app.byTestId('progress')).toBeVisible();
+  await expect(app.byTestId('progress.label')).toHaveText('Subdividing to level 1…');
+  await test.step('the main thread answers while the worker computes', async () => {
+    const start = Date.now();
+    await app.page.evaluate(() => document.title);
+    expect(Date.now() - start).toBeLessThan(500);
+    expect((await app.state()).busy).toBe(true);
+  });
+  await app.byTestId('progress.cancel').click();
+  await expect(app.byTestId('progress')).toBeHidden();
+  const state = await app.state();
+  expect(state).toMatchObject({ busy: false, level: 0, levelCount: 1, modelName: 'grid-500.off' });
+  expect((await app.facts()).faces).toBe(250_000);
+  await test.step('a fresh worker takes over', async () => {
+    await app.load('cube.off', CUBE);
+    await app.subdivide();
+    expect((await app.facts()).faces).toBe(24);
+  });
+});
+
+test('trackball camera, fit, save view and restore view', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  const box = await app.canvas.boundingBox();
+  if (!box) throw new Error('no canvas');
+  const cx = box.x + box.width / 2;
+  const cy = box.y + box.height / 2;
+  const fitted = (await app.state()).view;
+  const distance = (v: typeof fitted) => Math.hypot(...v.position.map((p, i) => p - v.target[i]));
+
+  await test.step('drag rotates', async () => {
+    await app.page.mouse.move(cx, cy);
+    await app.page.mouse.down();
+    await app.page.mouse.move(cx + 120, cy + 30, { steps: 8 });
+    await app.page.mouse.up();
+    await expect.poll(async () => (await app.state()).view.position).not.toEqual(fitted.position);
+    const rotated = (await app.state()).view;
+    expect(rotated.target).toEqual(fitted.target);
+    expect(distance(rotated)).toBeCloseTo(distance(fitted), 3);
+  });
+  await test.step('save the view, load another model, restore', async () => {
+    await app.byTestId('view.save').click();
+    const saved = (await app.state()).view;
+    await app.load('tetrahedron.off', readFileSync('public/meshes/tetrahedron.off', 'utf8'));
+    expect((await app.state()).view.position).not.toEqual(saved.position);
+    await app.byTestId('view.restore').click();
+    const restored = (await app.state()).view;
+    restored.position.forEach((p, i) => expect(p).toBeCloseTo(saved.position[i], 6));
+  });
+  await test.step('right-drag pans, wheel zooms, F fits', async () => {
+    const before = (await app.state()).view;
+    await app.page.mouse.move(cx, cy);
+    await app.page.mouse.down({ button: 'right' });
+    await app.page.mouse.move(cx + 60, cy, { steps: 6 });
+    await app.page.mouse.up({ button: 'right' });
+    await expect.poll(async () => (await app.state()).view.target).not.toEqual(before.target);
+    const panned = (await app.state()).view;
+    await app.page.mouse.wheel(0, 400);
+    await expect.poll(async () => distance((await app.state()).view)).not.toBeCloseTo(distance(panned), 3);
+    await app.page.keyboard.press('f');
+    await expect
+      .poll(async () => (await app.state()).view.target.map((t) => Math.abs(t) < 1e-9))
+      .toEqual([true, true, true]);
+  });
+});
+
+test('keyboard: shortcuts, every control reachable with Tab and named', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await test.step('s subdivides, [ and ] scrub, c toggles the control mesh', async () => {
+    await app.page.keyboard.press('s');
+    await expect.poll(async () => (await app.state()).level).toBe(1);
+    await app.page.keyboard.press('s');
+    await expect.poll(async () => (await app.state()).level).toBe(2);
+    await app.page.keyboard.press('[');
+    expect((await app.state()).level).toBe(1);
+    await app.page.keyboard.press(']');
+    expect((await app.state()).level).toBe(2);
+    await app.page.keyboard.press('c');
+    expect((await app.state()).overlays.control).toBe(true);
+  });
+  await test.step('Tab reaches the controls', async () => {
+    const reached = new Set<string>();
+    await app.page.locator('body').focus();
+    for (let i = 0; i < 40; i++) {
+      await app.page.keyboard.press('Tab');
+      const id = await app.page.evaluate(
+        () =>
+          (document.activeElement as HTMLElement | null)?.dataset.testid ??
+          document.activeElement?.parentElement?.dataset.testid,
+      );
+      if (id) reached.add(id);
+    }
+    for (const id of [
+      'open.button',
+      'gallery',
+      'export-panel',
+      'controls.scheme',
+      'controls.subdivide',
+      'controls.reset',
+      'controls.level',
+      'controls.render-mode',
+      'controls.overlay-control',
+      'controls.overlay-bbox',
+      'view.fit',
+      'view.save',
+    ]) {
+      expect(reached, id).toContain(id);
+    }
+  });
+  await test.step('every visible control has an accessible name', async () => {
+    const controls = app.page.locator('button:visible, select:visible, input:visible, summary:visible');
+    const count = await controls.count();
+    expect(count).toBeGreaterThan(10);
+    for (let i = 0; i < count; i++) await expect(controls.nth(i)).toHaveAccessibleName(/\S/);
+  });
+});
+
+test('Ctrl+C copies the view as a PNG image', async ({ app, context }) => {
+  await context.grantPermissions(['clipboard-read', 'clipboard-write']);
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await app.canvas.click();
+  await app.page.keyboard.press('Control+c');
+  const types = await app.page.evaluate(async () => {
+    const items = await navigator.clipboard.read();
+    const blob = await items[0].getType('image/png');
+    const head = new Uint8Array(await blob.slice(0, 4).arrayBuffer());
+    return { types: items.flatMap((item) => item.types), head: [...head] };
+  });
+  expect(types.types).toContain('image/png');
+  expect(types.head).toEqual([0x89, 0x50, 0x4e, 0x47]);
+  expect((await app.state()).lastError).toBeNull();
+});
+
+for (const [device, viewport] of [
+  ['laptop', { width: 1024, height: 768 }],
+  ['tablet', { width: 768, height: 1024 }],
+] as const) {
+  test(`layout on a ${device} (${viewport.width}×${viewport.height})`, async ({ app }) => {
+    await app.page.setViewportSize(viewport);
+    await app.open();
+    await app.load('cube.off', CUBE);
+    const canvas = await app.canvas.boundingBox();
+    expect(canvas?.width).toBeGreaterThan(500);
+    expect(canvas?.height).toBeGreaterThan(400);
+    // Nothing sticks out sideways.
+    const overflow = await app.page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+    expect(overflow).toBeLessThanOrEqual(0);
+    await expect(app.byTestId('controls.subdivide')).toBeInViewport();
+    await app.snapshot(`05-layout-${device}`);
+  });
+}
