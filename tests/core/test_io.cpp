@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/mesh_build.h"
 #include "core/mesh_io.h"
 
 namespace subdivlab {
@@ -257,6 +258,13 @@ TEST(IoOffErrors, FaceListsFewerOrMoreValuesThanItDeclares) {
   EXPECT_EQ(read_error(more, Mesh_format::off, Status_code::parse_error, 8),
             "line 8: face 1 declares 3 vertices but the line has 5 more values (at most 4, a "
             "colour, may follow the indices)");
+}
+
+TEST(IoOffErrors, HeaderDeclaresFewerVerticesThanTheDataHas) {
+  const std::string text = "OFF\n3 4 0\n0 0 0\n1 0 0\n0 1 0\n0.5 0 1\n" + tetra_faces;
+  EXPECT_EQ(read_error(text, Mesh_format::off, Status_code::parse_error, 6),
+            "line 6: face 0 must start with its vertex count, found '0.5' (do the header counts "
+            "match the data?)");
 }
 
 TEST(IoOffErrors, BadCountsLine) {
@@ -511,6 +519,20 @@ void expect_round_trip(const Mesh_buffers& m, Mesh_format format, const std::str
     // Bitwise equal, sign of zero included.
     EXPECT_EQ(back.value.positions[i], m.positions[i]) << what << " coordinate " << i;
     EXPECT_EQ(std::signbit(back.value.positions[i]), std::signbit(m.positions[i])) << what;
+  }
+}
+
+TEST(IoWrite, ReadBuildToBuffersGivesBackTheFileExactly) {
+  for (const char* name : {"cube.off", "torus-tri.off", "mixed-open.off", "rhombicuboctahedron.off",
+                           "grid-open.off", "two-tetrahedra.off"}) {
+    const Mesh_buffers in = read_ok(fixture(name), Mesh_format::off);
+    Mesh mesh;
+    ASSERT_TRUE(build_mesh(in, mesh).ok()) << name;
+    const Mesh_buffers out = to_buffers(mesh);
+    EXPECT_EQ(out.positions, in.positions) << name;
+    EXPECT_EQ(out.face_sizes, in.face_sizes) << name;
+    EXPECT_EQ(out.face_indices, in.face_indices) << name;
+    EXPECT_EQ(write_mesh(out, Mesh_format::off), write_mesh(in, Mesh_format::off)) << name;
   }
 }
 

@@ -11,6 +11,9 @@ namespace subdivlab {
 /// faces and in opposite directions, manifold vertices) and builds `out`.
 /// On failure `out` is left empty and the status names the first problem
 /// (face number, vertex numbers, 0-based as in the buffers).
+/// Vertices that no face uses are dropped; the others keep their relative
+/// order (so to_buffers of a fresh build gives back the input exactly when
+/// every vertex is used).
 Status build_mesh(const Mesh_buffers& in, Mesh& out);
 
 /// Buffers of a Surface_mesh; vertices renumbered 0..n-1 in iteration order,

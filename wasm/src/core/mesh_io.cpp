@@ -291,7 +291,7 @@ Result<Mesh_buffers> read_off(std::string_view text) {
     long long k = 0;
     if (!parse_int(tok[0], k) || k < 0) {
       return parse_fail(line, "face " + std::to_string(f) + " must start with its vertex count, found " +
-                                  quoted(tok[0]));
+                                  quoted(tok[0]) + " (do the header counts match the data?)");
     }
     const std::size_t listed = tok.size() - 1;
     if (static_cast<unsigned long long>(k) > listed) {

@@ -15,6 +15,8 @@ enum class Mesh_format { off, obj };
 /// 2-manifold polygon mesh (see build_mesh). Never throws; never allocates
 /// more than the data in `text` backs, whatever counts a header declares.
 /// Errors name the problem and, where it applies, the 1-based line.
+/// Syntax errors are parse_error; index, face-size and manifold problems are
+/// invalid_mesh. Vertices no face uses are dropped, as build_mesh drops them.
 Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format);
 
 /// OFF / OBJ text of the mesh. Coordinates are written with 17 significant
