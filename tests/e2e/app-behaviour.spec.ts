@@ -212,14 +212,16 @@ test('Ctrl+C copies the view as a PNG image', async ({ app, context }) => {
   await app.load('cube.off', CUBE);
   await app.canvas.click();
   await app.page.keyboard.press('Control+c');
-  const types = await app.page.evaluate(async () => {
+  // The copy is asynchronous (encode, then write): wait until the clipboard holds the image.
+  const clipboardTypes = () =>
+    app.page.evaluate(async () => (await navigator.clipboard.read()).flatMap((item) => [...item.types]));
+  await expect.poll(clipboardTypes).toContain('image/png');
+  const head = await app.page.evaluate(async () => {
     const items = await navigator.clipboard.read();
     const blob = await items[0].getType('image/png');
-    const head = new Uint8Array(await blob.slice(0, 4).arrayBuffer());
-    return { types: items.flatMap((item) => item.types), head: [...head] };
+    return [...new Uint8Array(await blob.slice(0, 4).arrayBuffer())];
   });
-  expect(types.types).toContain('image/png');
-  expect(types.head).toEqual([0x89, 0x50, 0x4e, 0x47]);
+  expect(head).toEqual([0x89, 0x50, 0x4e, 0x47]);
   expect((await app.state()).lastError).toBeNull();
 });
 
