@@ -10,6 +10,8 @@ export default defineConfig({
     outDir: '../dist',
     emptyOutDir: true,
     target: 'es2022',
+    // three.js alone is about 550 kB minified (150 kB gzip); it is one chunk on purpose.
+    chunkSizeWarningLimit: 700,
   },
   worker: {
     format: 'es',
