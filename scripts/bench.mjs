@@ -41,8 +41,9 @@ if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
 console.log('[bench] building subdiv_bench_native (Release)');
 run('cmake', ['--build', buildDir, '--parallel', '2', '--target', 'subdiv_bench_native']);
 
-const header = readFileSync(meshPath, 'utf8').split('\n', 4).join(' ');
-console.log(`[bench] ${basename(meshPath)} (${header.replace(/\s+/g, ' ').slice(0, 60)}...), ${runs} runs per scheme`);
+const counts = /OFF\s+(\d+)\s+(\d+)/.exec(readFileSync(meshPath, 'utf8').slice(0, 4096));
+const size = counts ? ` (${counts[1]} vertices, ${counts[2]} faces)` : '';
+console.log(`[bench] ${basename(meshPath)}${size}, ${runs} timed runs per scheme`);
 
 console.log('[bench] native ...');
 const native = run(join(buildDir, 'subdiv_bench_native'), [meshPath, String(runs), ...SCHEMES])
