@@ -111,17 +111,31 @@ test('a scheme that needs triangles fails clearly on quads and offers to triangu
   expect((await app.state()).triangulate).toBe(true);
 });
 
-test('reset drops computed levels; a new scheme starts from level 0', async ({ app }) => {
+test('reset drops computed levels and their GPU geometry; a new scheme starts from level 0', async ({ app }) => {
   await app.open();
   await app.load('cube.off', CUBE);
+  // Level 0 draws a surface and its edge lines once rendered: that is the baseline.
+  await app.byTestId('controls.render-mode').selectOption('edges');
+  await app.canvasPixels();
+  const baseline = (await app.state()).gpuGeometries;
   await app.subdivide();
   await app.subdivide();
+  await app.scrubTo(1);
+  await app.canvasPixels();
+  expect((await app.state()).gpuGeometries).toBeGreaterThan(baseline);
   await app.byTestId('controls.reset').click();
   await expect.poll(async () => (await app.state()).levelCount).toBe(1);
   expect((await app.facts()).faces).toBe(6);
+  await app.canvasPixels();
+  expect((await app.state()).gpuGeometries).toBe(baseline);
   await app.subdivide();
   await app.chooseScheme('doo-sabin');
   expect(await app.state()).toMatchObject({ level: 0, levelCount: 1 });
+  await test.step('loading another model frees the old one', async () => {
+    await app.load('tetrahedron.off', TETRAHEDRON);
+    await app.canvasPixels();
+    expect((await app.state()).gpuGeometries).toBe(baseline);
+  });
 });
 
 test('an invalid file shows a message naming it; the previous mesh and levels stay', async ({ app }) => {

@@ -182,6 +182,7 @@ export class AppShell {
           view: this.viewer.getView(),
           fov: this.viewer.view.camera.fov,
           aspect: this.viewer.view.camera.aspect,
+          gpuGeometries: this.viewer.view.gpuMemory().geometries,
         };
       },
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),

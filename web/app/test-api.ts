@@ -31,6 +31,8 @@ export interface SubdivLabTestState {
   /** Vertical field of view in degrees and aspect ratio of the camera. */
   fov: number;
   aspect: number;
+  /** Geometries alive on the GPU: levels that were dropped must not stay. */
+  gpuGeometries: number;
 }
 
 export interface SubdivLabTestApi {

@@ -210,6 +210,12 @@ export class SceneView {
     this.dirty = true;
   }
 
+  /** Geometries and textures alive on the GPU (three's renderer.info), for leak checks. */
+  gpuMemory(): { geometries: number; textures: number } {
+    const { geometries, textures } = this.renderer.info.memory;
+    return { geometries, textures };
+  }
+
   /** Marks the picture out of date; it is redrawn on the next animation frame. */
   requestRender(): void {
     this.dirty = true;

@@ -53,6 +53,7 @@ export class FactsPanel {
 
   update(state: ViewerState): void {
     this.model.textContent = state.modelName ?? '–';
+    this.model.title = state.modelName ?? '';
     this.level.textContent = state.levelCount > 0 ? String(state.level) : '–';
     for (const { key, value } of ROWS) {
       const cell = this.cells.get(key);
