@@ -1,0 +1,88 @@
+/**
+ * The web app's mesh sources (web/app/mesh-source.ts): format detection and
+ * the ?src= download rules (http/https only, size limit enforced while
+ * reading, even when the server sends no Content-Length). A real HTTP server
+ * on a loopback port serves the bodies.
+ */
+import { createServer, type Server } from 'node:http';
+import type { AddressInfo } from 'node:net';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { detectFormat, fetchMesh, LoadError } from '../../web/app/mesh-source';
+
+const CUBE = 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n';
+
+let server: Server;
+let base: string;
+
+beforeAll(async () => {
+  server = createServer((request, response) => {
+    const url = new URL(request.url ?? '/', 'http://localhost');
+    if (url.pathname === '/cube.off') {
+      response.writeHead(200, { 'content-type': 'text/plain' });
+      response.end(CUBE);
+    } else if (url.pathname === '/declared-big.off') {
+      response.writeHead(200, { 'content-length': String(5000) });
+      response.end('x'.repeat(5000));
+    } else if (url.pathname === '/chunked-big.off') {
+      // No Content-Length: the limit must hold while reading.
+      response.writeHead(200, { 'transfer-encoding': 'chunked' });
+      for (let i = 0; i < 10; i++) response.write('y'.repeat(1000));
+      response.end();
+    } else if (url.pathname === '/mesh') {
+      response.writeHead(200);
+      response.end('# no extension\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n');
+    } else {
+      response.writeHead(404, 'Not Found');
+      response.end();
+    }
+  });
+  await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+  base = `http://127.0.0.1:${(server.address() as AddressInfo).port}/`;
+});
+
+afterAll(() => new Promise<void>((resolve) => server.close(() => resolve())));
+
+describe('detectFormat', () => {
+  it('uses the extension first, in any case', () => {
+    expect(detectFormat('Model.OFF', 'v 1 2 3')).toBe('off');
+    expect(detectFormat('model.obj', 'OFF')).toBe('obj');
+  });
+  it('sniffs the first meaningful line otherwise', () => {
+    expect(detectFormat('mesh', '\uFEFF# comment\n\nCOFF\n1 0 0\n')).toBe('off');
+    expect(detectFormat('mesh.txt', '# made by hand\r\nv 0 0 0\r\n')).toBe('obj');
+    expect(detectFormat('notes.txt', 'hello world\n')).toBeNull();
+  });
+});
+
+describe('fetchMesh', () => {
+  it('loads a relative http URL and names it by its last path segment', async () => {
+    const mesh = await fetchMesh('cube.off', base);
+    expect(mesh).toEqual({ name: 'cube.off', text: CUBE, format: 'off' });
+  });
+
+  it('sniffs the format of a URL without extension', async () => {
+    expect((await fetchMesh(`${base}mesh`, base)).format).toBe('obj');
+  });
+
+  it.each(['file:///etc/passwd', 'javascript:alert(1)', 'data:text/plain,OFF', 'ftp://example.com/a.off'])(
+    'refuses %s',
+    async (src) => {
+      await expect(fetchMesh(src, base)).rejects.toThrow(/^Only http and https URLs can be loaded, not [a-z]+:$/);
+    },
+  );
+
+  it('refuses a body whose declared length is over the limit, before reading it', async () => {
+    const error = await fetchMesh('declared-big.off', base, 1000).catch((e: unknown) => e);
+    expect(error).toBeInstanceOf(LoadError);
+    expect((error as LoadError).source).toBe('declared-big.off');
+    expect((error as LoadError).message).toMatch(/limit for URLs/);
+  });
+
+  it('stops reading a chunked body as soon as it passes the limit', async () => {
+    await expect(fetchMesh('chunked-big.off', base, 2500)).rejects.toThrow(/larger than the limit for URLs/);
+  });
+
+  it('reports the server status', async () => {
+    await expect(fetchMesh('missing.off', base)).rejects.toThrow('The server answered 404 Not Found');
+  });
+});
