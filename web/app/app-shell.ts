@@ -153,7 +153,8 @@ export class AppShell {
 
     this.viewer
       .schemes()
-      .then((names) => {
+      .then((all) => {
+        const names = all.filter((name) => !schemeInfo(name).needsRules);
         this.schemes = names;
         this.scheme.setSchemes(names, this.viewer.state.scheme);
         this.update(this.viewer.state);

@@ -8,6 +8,8 @@ export interface SchemeInfo {
   description: string;
   /** The scheme refuses faces other than triangles (the core's `not_triangles`). */
   needsTriangles: boolean;
+  /** The scheme takes user rules (issue 4's rules panel); not offered until that panel exists. */
+  needsRules?: boolean;
 }
 
 const INFO: Record<string, SchemeInfo> = {
@@ -50,6 +52,7 @@ const INFO: Record<string, SchemeInfo> = {
     label: 'Custom rules',
     description: 'Your own weights on a refinement host (see the rules panel).',
     needsTriangles: false,
+    needsRules: true,
   },
 };
 

@@ -57,6 +57,10 @@ export function dropdown(label: string, testId: string, ...children: Node[]): HT
   body.addEventListener('click', (event) => {
     if ((event.target as HTMLElement).closest('button')) details.open = false;
   });
+  // Like a menu, a click elsewhere closes it.
+  document.addEventListener('pointerdown', (event) => {
+    if (details.open && !details.contains(event.target as Node)) details.open = false;
+  });
   details.addEventListener('keydown', (event) => {
     if (event.key === 'Escape' && details.open) {
       event.preventDefault();
