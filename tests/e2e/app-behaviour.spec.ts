@@ -137,6 +137,18 @@ test('trackball camera, fit, save view and restore view', async ({ app }) => {
     const restored = (await app.state()).view;
     for (let i = 0; i < 3; i++) expect(restored.position[i]).toBeCloseTo(saved.position[i], 6);
   });
+  await test.step('keyboard camera in the focused view: arrows rotate, + zooms, Shift+arrows pan', async () => {
+    await app.byTestId('viewer').focus();
+    const before = (await app.state()).view;
+    await app.page.keyboard.press('ArrowRight');
+    const turned = (await app.state()).view;
+    expect(turned.position).not.toEqual(before.position);
+    expect(distance(turned)).toBeCloseTo(distance(before), 6);
+    await app.page.keyboard.press('+');
+    expect(distance((await app.state()).view)).toBeCloseTo(distance(before) / 1.2, 6);
+    await app.page.keyboard.press('Shift+ArrowUp');
+    expect((await app.state()).view.target).not.toEqual(before.target);
+  });
   await test.step('right-drag pans, wheel zooms, F fits', async () => {
     const before = (await app.state()).view;
     await app.page.mouse.move(cx, cy);
@@ -182,6 +194,7 @@ test('keyboard: shortcuts, every control reachable with Tab and named', async ({
       if (id) reached.add(id);
     }
     for (const id of [
+      'viewer',
       'open.button',
       'gallery',
       'export-panel',

@@ -58,8 +58,16 @@ export class AppShell {
       this.fileInput.value = '';
       if (file) void this.openFile(file);
     });
-    const stage = el('div', { testId: 'viewer', className: 'viewer', attrs: { role: 'region' } });
-    stage.setAttribute('aria-label', '3D view: drag to rotate, right-drag to pan, wheel to zoom');
+    const stage = el('div', {
+      testId: 'viewer',
+      className: 'viewer',
+      attrs: {
+        role: 'region',
+        tabindex: '0',
+        'aria-label': '3D view: drag or arrow keys rotate, right-drag or Shift+arrows pan, wheel or +/− zoom',
+      },
+    });
+    stage.addEventListener('keydown', (event) => this.onViewKey(event));
     this.emptyHint = el(
       'div',
       { testId: 'viewer.empty', className: 'empty-hint' },
@@ -246,6 +254,31 @@ export class AppShell {
     } catch (error) {
       this.showError(state.modelName ?? 'mesh', error, true);
     }
+  }
+
+  /** Camera keys while the view has focus: arrows rotate, Shift+arrows pan, +/− zoom. */
+  private onViewKey(event: KeyboardEvent): void {
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    const view = this.viewer.view;
+    const step = 10;
+    const moves: Record<string, () => void> = event.shiftKey
+      ? {
+          ArrowLeft: () => view.pan(0.05, 0),
+          ArrowRight: () => view.pan(-0.05, 0),
+          ArrowUp: () => view.pan(0, -0.05),
+          ArrowDown: () => view.pan(0, 0.05),
+        }
+      : {
+          ArrowLeft: () => view.orbit(-step, 0),
+          ArrowRight: () => view.orbit(step, 0),
+          ArrowUp: () => view.orbit(0, -step),
+          ArrowDown: () => view.orbit(0, step),
+        };
+    const zooms: Record<string, number> = { '+': 1 / 1.2, '=': 1 / 1.2, '-': 1.2, _: 1.2 };
+    const move = moves[event.key] ?? (event.key in zooms ? () => view.zoom(zooms[event.key]) : undefined);
+    if (!move) return;
+    event.preventDefault();
+    move();
   }
 
   private confirmLargeStep(info: LargeStepInfo): Promise<boolean> {

@@ -17,6 +17,7 @@ import {
   Mesh,
   MeshLambertMaterial,
   PerspectiveCamera,
+  Quaternion,
   Scene,
   Sphere,
   Vector3,
@@ -204,6 +205,49 @@ export class SceneView {
     this.camera.position.fromArray(view.position);
     this.camera.up.fromArray(view.up).normalize();
     this.controls.target.fromArray(view.target);
+    this.camera.lookAt(this.controls.target);
+    this.updateClipping();
+    this.controls.update();
+    this.dirty = true;
+  }
+
+  /**
+   * Keyboard camera moves (the trackball only follows the pointer): turns the
+   * camera about the target by `yawDeg` around its up axis and `pitchDeg`
+   * around its right axis.
+   */
+  orbit(yawDeg: number, pitchDeg: number): void {
+    const eye = new Vector3().subVectors(this.camera.position, this.controls.target);
+    const right = new Vector3().crossVectors(this.camera.up, eye).normalize();
+    const yaw = new Quaternion().setFromAxisAngle(this.camera.up, (yawDeg * Math.PI) / 180);
+    const pitch = new Quaternion().setFromAxisAngle(right, (pitchDeg * Math.PI) / 180);
+    const turn = yaw.multiply(pitch);
+    eye.applyQuaternion(turn);
+    this.camera.up.applyQuaternion(turn);
+    this.camera.position.copy(this.controls.target).add(eye);
+    this.afterKeyboardMove();
+  }
+
+  /** Moves the camera towards the target (factor < 1) or away from it (factor > 1). */
+  zoom(factor: number): void {
+    const eye = new Vector3().subVectors(this.camera.position, this.controls.target).multiplyScalar(factor);
+    this.camera.position.copy(this.controls.target).add(eye);
+    this.afterKeyboardMove();
+  }
+
+  /** Slides camera and target sideways by fractions of the view's height. */
+  pan(dx: number, dy: number): void {
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    const height = 2 * distance * Math.tan(((this.camera.fov / 2) * Math.PI) / 180);
+    const eye = new Vector3().subVectors(this.camera.position, this.controls.target);
+    const right = new Vector3().crossVectors(this.camera.up, eye).normalize();
+    const shift = right.multiplyScalar(dx * height).addScaledVector(this.camera.up, dy * height);
+    this.camera.position.add(shift);
+    this.controls.target.add(shift);
+    this.afterKeyboardMove();
+  }
+
+  private afterKeyboardMove(): void {
     this.camera.lookAt(this.controls.target);
     this.updateClipping();
     this.controls.update();

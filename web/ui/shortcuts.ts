@@ -20,6 +20,8 @@ export const SHORTCUTS: readonly { keys: string; action: string }[] = [
   { keys: 'B', action: 'Toggle the bounding box' },
   { keys: 'F', action: 'Fit the view to the model' },
   { keys: 'O', action: 'Open a file' },
+  { keys: '← ↑ → ↓', action: 'Rotate (the 3D view focused; with Shift: pan)' },
+  { keys: '+ / −', action: 'Zoom in / out (the 3D view focused)' },
   { keys: 'Esc', action: 'Cancel a running step' },
   { keys: 'Ctrl+C', action: 'Copy the view as PNG' },
 ];
