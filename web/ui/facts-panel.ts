@@ -52,6 +52,7 @@ export class FactsPanel {
   }
 
   update(state: ViewerState): void {
+    this.element.hidden = state.levelCount === 0;
     this.model.textContent = state.modelName ?? '–';
     this.model.title = state.modelName ?? '';
     this.level.textContent = state.levelCount > 0 ? String(state.level) : '–';
