@@ -15,19 +15,23 @@ namespace {
 
 Mesh_buffers cube_buffers() {
   Mesh_buffers b;
-  b.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  b.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
   b.face_sizes = {4, 4, 4, 4, 4, 4};
-  b.face_indices = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+  b.face_indices = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
+                    1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
   return b;
 }
 
 /// Builds and expects failure with the given code; returns the message.
-std::string build_error(const Mesh_buffers& b, Status_code code = Status_code::invalid_mesh) {
+std::string build_error(const Mesh_buffers& b,
+                        Status_code code = Status_code::invalid_mesh) {
   Mesh m;
   const Status s = build_mesh(b, m);
   EXPECT_EQ(s.code, code) << s.message;
   EXPECT_EQ(s.line, 0);
-  EXPECT_EQ(m.number_of_vertices(), 0u) << "a failed build leaves the mesh empty";
+  EXPECT_EQ(m.number_of_vertices(), 0u)
+      << "a failed build leaves the mesh empty";
   EXPECT_EQ(m.number_of_faces(), 0u);
   return s.message;
 }
@@ -48,7 +52,8 @@ TEST(BuildMesh, ToBuffersKeepsVertexNumbersPositionsAndFaces) {
   Mesh m;
   ASSERT_TRUE(build_mesh(in, m).ok());
   const Mesh_buffers out = to_buffers(m);
-  EXPECT_EQ(out.positions, in.positions);  // exact: the same doubles in the same order
+  EXPECT_EQ(out.positions,
+            in.positions);  // exact: the same doubles in the same order
   EXPECT_EQ(out.face_sizes, in.face_sizes);
   // Each face starts at the same corner: a fresh build gives back its input.
   EXPECT_EQ(out.face_indices, in.face_indices);
@@ -61,7 +66,8 @@ TEST(BuildMesh, ToBuffersRenumbersAfterRemovals) {
   // Removing a face leaves its vertices; removing vertex 0's faces and the
   // vertex leaves a hole in the index range that to_buffers closes.
   std::vector<Mesh::Face_index> around;
-  for (auto f : CGAL::faces_around_target(m.halfedge(Mesh::Vertex_index(0)), m)) around.push_back(f);
+  for (auto f : CGAL::faces_around_target(m.halfedge(Mesh::Vertex_index(0)), m))
+    around.push_back(f);
   for (auto f : around) CGAL::Euler::remove_face(m.halfedge(f), m);
   ASSERT_EQ(m.number_of_vertices(), 7u);
   const Mesh_buffers out = to_buffers(m);
@@ -134,7 +140,8 @@ TEST(BuildErrors, FaceWithFewerThanThreeVertices) {
 TEST(BuildErrors, IndexOutOfRange) {
   Mesh_buffers b = cube_buffers();
   b.face_indices[9] = 12;  // face 2
-  EXPECT_EQ(build_error(b), "face 2: vertex index 12 is out of range (8 vertices)");
+  EXPECT_EQ(build_error(b),
+            "face 2: vertex index 12 is out of range (8 vertices)");
 }
 
 TEST(BuildErrors, RepeatedVertexInAFace) {
@@ -148,7 +155,8 @@ TEST(BuildErrors, FirstFailingFaceWinsAndChecksRunInOrder) {
   b.face_indices[20] = 99;  // face 5 out of range
   b.face_indices[5] = 4;    // face 1 repeats vertex 4
   EXPECT_EQ(build_error(b), "face 1 uses vertex 4 more than once");
-  b.positions[0] = std::numeric_limits<double>::infinity();  // coordinates come before faces
+  b.positions[0] =
+      std::numeric_limits<double>::infinity();  // coordinates come before faces
   EXPECT_EQ(build_error(b), "vertex 0 has a non-finite coordinate");
 }
 
@@ -158,14 +166,17 @@ TEST(BuildErrors, EdgeUsedByThreeFaces) {
   b.face_sizes = {3, 3, 3};
   b.face_indices = {0, 1, 2, 1, 0, 3, 0, 1, 4};
   EXPECT_EQ(build_error(b),
-            "non-manifold edge between vertices 0 and 1: used by 3 faces (faces 0, 1 and 2)");
+            "non-manifold edge between vertices 0 and 1: used by 3 faces "
+            "(faces 0, 1 and 2)");
 }
 
 TEST(BuildErrors, InconsistentOrientation) {
   Mesh_buffers b = cube_buffers();
-  std::reverse(b.face_indices.begin() + 4, b.face_indices.begin() + 8);  // face 1 flipped
+  std::reverse(b.face_indices.begin() + 4,
+               b.face_indices.begin() + 8);  // face 1 flipped
   EXPECT_EQ(build_error(b),
-            "inconsistent orientation: faces 1 and 2 both use edge 5\u21924 in the same direction");
+            "inconsistent orientation: faces 1 and 2 both use edge 5\u21924 in "
+            "the same direction");
 }
 
 TEST(BuildErrors, TwoTrianglesSharingAnEdgeTheSameWay) {
@@ -174,7 +185,8 @@ TEST(BuildErrors, TwoTrianglesSharingAnEdgeTheSameWay) {
   b.face_sizes = {3, 3};
   b.face_indices = {0, 1, 2, 0, 1, 3};
   EXPECT_EQ(build_error(b),
-            "inconsistent orientation: faces 0 and 1 both use edge 0\u21921 in the same direction");
+            "inconsistent orientation: faces 0 and 1 both use edge 0\u21921 in "
+            "the same direction");
 }
 
 TEST(BuildErrors, NonManifoldVertexBowtie) {
@@ -184,7 +196,8 @@ TEST(BuildErrors, NonManifoldVertexBowtie) {
   b.face_sizes = {3, 3};
   b.face_indices = {0, 1, 2, 0, 3, 4};
   EXPECT_EQ(build_error(b),
-            "non-manifold vertex 0: its faces form 2 separate fans that meet only at this vertex "
+            "non-manifold vertex 0: its faces form 2 separate fans that meet "
+            "only at this vertex "
             "(faces 0 and 1)");
 }
 
@@ -192,7 +205,8 @@ TEST(BuildErrors, NonManifoldVertexOfTwoClosedCones) {
   // Two tetrahedra glued at one vertex (vertex 0): every edge is fine, the
   // vertex is not.
   Mesh_buffers b;
-  b.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1};
+  b.positions = {0, 0,  0, 1, 0, 0,  0, 1, 0, 0, 0,
+                 1, -1, 0, 0, 0, -1, 0, 0, 0, -1};
   b.face_sizes = {3, 3, 3, 3, 3, 3, 3, 3};
   b.face_indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3,   // first tetrahedron
                     0, 4, 5, 0, 5, 6, 0, 6, 4, 4, 6, 5};  // second
@@ -205,8 +219,10 @@ TEST(BuildErrors, EdgeCheckComesBeforeOrientationCheck) {
   Mesh_buffers b;
   b.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
   b.face_sizes = {3, 3, 3};
-  b.face_indices = {0, 1, 2, 0, 1, 3, 0, 1, 4};  // 3 faces, all the same direction
-  EXPECT_NE(build_error(b).find("non-manifold edge between vertices 0 and 1"), std::string::npos);
+  b.face_indices = {0, 1, 2, 0, 1,
+                    3, 0, 1, 4};  // 3 faces, all the same direction
+  EXPECT_NE(build_error(b).find("non-manifold edge between vertices 0 and 1"),
+            std::string::npos);
 }
 
 TEST(BuildErrors, AFailedBuildClearsAPreviousMesh) {

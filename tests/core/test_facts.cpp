@@ -18,9 +18,10 @@ Mesh_buffers load(const std::string& name) {
   std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
-  const Result<Mesh_buffers> r =
-      read_mesh(s.str(), name.size() > 4 && name.substr(name.size() - 4) == ".obj" ? Mesh_format::obj
-                                                                                   : Mesh_format::off);
+  const Result<Mesh_buffers> r = read_mesh(
+      s.str(), name.size() > 4 && name.substr(name.size() - 4) == ".obj"
+                   ? Mesh_format::obj
+                   : Mesh_format::off);
   EXPECT_TRUE(r.ok()) << name << ": " << r.status.message;
   return r.value;
 }
@@ -66,7 +67,8 @@ TEST(FactsFixtures, PlatonicSolids) {
 }
 
 TEST(FactsFixtures, Rhombicuboctahedron) {
-  expect_topology("rhombicuboctahedron.off", {24, 48, 26, 1, 0, 2, 0, true, 8, 18, 0});
+  expect_topology("rhombicuboctahedron.off",
+                  {24, 48, 26, 1, 0, 2, 0, true, 8, 18, 0});
 }
 
 TEST(FactsFixtures, ToriHaveGenusOne) {
@@ -110,7 +112,8 @@ TEST(FactsBuffers, AnnulusHasTwoBoundaries) {
   for (std::size_t f = 0; f < grid.face_count(); ++f) {
     if (f == 4) continue;
     ring.face_sizes.push_back(4);
-    ring.face_indices.insert(ring.face_indices.end(), grid.face_indices.begin() + 4 * f,
+    ring.face_indices.insert(ring.face_indices.end(),
+                             grid.face_indices.begin() + 4 * f,
                              grid.face_indices.begin() + 4 * f + 4);
   }
   const Result<Mesh_facts> r = compute_facts(ring);
@@ -130,7 +133,8 @@ TEST(FactsBuffers, OpenedCubeAndMixedComponents) {
   Mesh_buffers tet = load("tetrahedron.off");
   Mesh_buffers m;
   m.positions = cube.positions;
-  for (std::size_t i = 0; i < tet.positions.size(); ++i) m.positions.push_back(tet.positions[i] + (i % 3 == 0 ? 5 : 0));
+  for (std::size_t i = 0; i < tet.positions.size(); ++i)
+    m.positions.push_back(tet.positions[i] + (i % 3 == 0 ? 5 : 0));
   m.face_sizes.assign(cube.face_sizes.begin() + 1, cube.face_sizes.end());
   m.face_indices.assign(cube.face_indices.begin() + 4, cube.face_indices.end());
   for (auto s : tet.face_sizes) m.face_sizes.push_back(s);
@@ -172,7 +176,8 @@ TEST(FactsBuffers, InvalidBuffersFailAsBuildMeshDoes) {
   m.face_indices[0] = 40;
   const Result<Mesh_facts> r = compute_facts(m);
   EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
-  EXPECT_EQ(r.status.message, "face 0: vertex index 40 is out of range (8 vertices)");
+  EXPECT_EQ(r.status.message,
+            "face 0: vertex index 40 is out of range (8 vertices)");
 }
 
 TEST(FactsMesh, EmptyMeshHasZeroFacts) {

@@ -103,7 +103,8 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
   const auto& sizes = in.face_sizes;
   const auto& idx = in.face_indices;
 
-  if (sizes.empty()) return fail_plain(Status_code::invalid_mesh, "the mesh has no faces");
+  if (sizes.empty())
+    return fail_plain(Status_code::invalid_mesh, "the mesh has no faces");
   if (in.positions.size() % 3 != 0) {
     return fail_plain(Status_code::invalid_mesh,
                       "positions hold " + std::to_string(in.positions.size()) +
@@ -114,17 +115,20 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
   if (total != idx.size()) {
     return fail_plain(Status_code::invalid_mesh,
                       "face sizes add up to " + std::to_string(total) +
-                          " indices but there are " + std::to_string(idx.size()));
+                          " indices but there are " +
+                          std::to_string(idx.size()));
   }
   if (idx.size() >= 0xffffffffu) {
-    return fail_plain(Status_code::too_large, "the mesh has too many face corners");
+    return fail_plain(Status_code::too_large,
+                      "the mesh has too many face corners");
   }
 
   const std::size_t nv = in.vertex_count();
   for (std::size_t i = 0; i < in.positions.size(); ++i) {
     if (!std::isfinite(in.positions[i])) {
-      return fail_plain(Status_code::invalid_mesh,
-                        "vertex " + name.vertex(i / 3) + " has a non-finite coordinate");
+      return fail_plain(
+          Status_code::invalid_mesh,
+          "vertex " + name.vertex(i / 3) + " has a non-finite coordinate");
     }
   }
 
@@ -137,32 +141,36 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
       offset[f] = o;
       const std::uint32_t k = sizes[f];
       if (k < 3) {
-        return name.fail(f, (name.by_line() ? std::string("the face") : name.face(f)) +
-                                " has " + std::to_string(k) +
-                                (k == 1 ? " vertex" : " vertices") +
-                                "; a face needs at least 3");
+        return name.fail(
+            f, (name.by_line() ? std::string("the face") : name.face(f)) +
+                   " has " + std::to_string(k) +
+                   (k == 1 ? " vertex" : " vertices") +
+                   "; a face needs at least 3");
       }
       for (std::uint32_t c = o; c < o + k; ++c) {
         if (idx[c] >= nv) {
-          return name.fail(
-              f, (name.by_line() ? std::string("face index ") : name.face(f) + ": vertex index ") +
-                     name.vertex(idx[c]) + " is out of range (" + std::to_string(nv) +
-                     " vertices)");
+          return name.fail(f,
+                           (name.by_line() ? std::string("face index ")
+                                           : name.face(f) + ": vertex index ") +
+                               name.vertex(idx[c]) + " is out of range (" +
+                               std::to_string(nv) + " vertices)");
         }
       }
       scratch.assign(idx.begin() + o, idx.begin() + o + k);
       std::sort(scratch.begin(), scratch.end());
       auto dup = std::adjacent_find(scratch.begin(), scratch.end());
       if (dup != scratch.end()) {
-        return name.fail(f, (name.by_line() ? std::string("the face") : name.face(f)) +
-                                " uses vertex " + name.vertex(*dup) + " more than once");
+        return name.fail(
+            f, (name.by_line() ? std::string("the face") : name.face(f)) +
+                   " uses vertex " + name.vertex(*dup) + " more than once");
       }
       o += k;
     }
   }
   std::vector<std::uint32_t> face_of(idx.size());
   for (std::size_t f = 0; f < sizes.size(); ++f) {
-    std::fill(face_of.begin() + offset[f], face_of.begin() + offset[f] + sizes[f],
+    std::fill(face_of.begin() + offset[f],
+              face_of.begin() + offset[f] + sizes[f],
               static_cast<std::uint32_t>(f));
   }
   auto next_corner = [&](std::uint32_t c) {
@@ -194,12 +202,14 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
   }
   if (best != npos) {
     std::vector<std::size_t> fs;
-    for (std::size_t i = best_begin; i < best_end; ++i) fs.push_back(face_of[he[i].corner]);
+    for (std::size_t i = best_begin; i < best_end; ++i)
+      fs.push_back(face_of[he[i].corner]);
     const std::uint64_t key = he[best_begin].key;
-    return name.fail(face_of[best],
-                     "non-manifold edge between vertices " + name.vertex(key >> 32) +
-                         " and " + name.vertex(key & 0xffffffffu) + ": used by " +
-                         std::to_string(fs.size()) + " faces (" + name.faces(fs) + ")");
+    return name.fail(
+        face_of[best],
+        "non-manifold edge between vertices " + name.vertex(key >> 32) +
+            " and " + name.vertex(key & 0xffffffffu) + ": used by " +
+            std::to_string(fs.size()) + " faces (" + name.faces(fs) + ")");
   }
 
   // An edge used twice in the same direction, reported at its second face.
@@ -216,11 +226,11 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
   if (best != npos) {
     const std::uint32_t c1 = static_cast<std::uint32_t>(first_corner);
     const std::uint32_t c2 = static_cast<std::uint32_t>(best);
-    return name.fail(face_of[c2],
-                     "inconsistent orientation: " +
-                         name.faces({face_of[c1], face_of[c2]}) + " both use edge " +
-                         name.vertex(idx[c1]) + "\u2192" + name.vertex(idx[next_corner(c1)]) +
-                         " in the same direction");
+    return name.fail(
+        face_of[c2],
+        "inconsistent orientation: " + name.faces({face_of[c1], face_of[c2]}) +
+            " both use edge " + name.vertex(idx[c1]) + "\u2192" +
+            name.vertex(idx[next_corner(c1)]) + " in the same direction");
   }
 
   // Vertices: corners around a vertex joined across shared edges must form
@@ -255,10 +265,11 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
     std::sort(roots.begin(), roots.end());
     const auto fans = std::unique(roots.begin(), roots.end()) - roots.begin();
     return name.fail(face_of[other],
-                     "non-manifold vertex " + name.vertex(v) + ": its faces form " +
-                         std::to_string(fans) +
+                     "non-manifold vertex " + name.vertex(v) +
+                         ": its faces form " + std::to_string(fans) +
                          " separate fans that meet only at this vertex (" +
-                         name.faces({face_of[corners[b]], face_of[other]}) + ")");
+                         name.faces({face_of[corners[b]], face_of[other]}) +
+                         ")");
   }
   return {};
 }
@@ -284,7 +295,8 @@ Mesh_buffers drop_isolated_vertices(const Mesh_buffers& in) {
   for (auto v : in.face_indices) out.face_indices.push_back(map[v]);
   for (std::size_t i = 0; i + 1 < in.control_edges.size(); i += 2) {
     const auto a = in.control_edges[i], b = in.control_edges[i + 1];
-    if (a >= nv || b >= nv || map[a] == 0xffffffffu || map[b] == 0xffffffffu) continue;
+    if (a >= nv || b >= nv || map[a] == 0xffffffffu || map[b] == 0xffffffffu)
+      continue;
     out.control_edges.push_back(map[a]);
     out.control_edges.push_back(map[b]);
   }
@@ -302,7 +314,8 @@ Status build_mesh(const Mesh_buffers& in, Mesh& out) {
   std::vector<Mesh::Vertex_index> vmap(nv);
   std::vector<bool> used(nv, false);
   for (auto v : in.face_indices) used[v] = true;
-  const std::size_t n_used = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
+  const std::size_t n_used =
+      static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
   // Every corner is one halfedge; a closed mesh has corners/2 edges, an open
   // one a little more, and reserve only needs to be close.
   out.reserve(n_used, in.face_indices.size() / 2 + 1, in.face_count());
@@ -315,14 +328,16 @@ Status build_mesh(const Mesh_buffers& in, Mesh& out) {
   std::size_t o = 0;
   for (std::size_t f = 0; f < in.face_count(); ++f) {
     face.clear();
-    for (std::uint32_t i = 0; i < in.face_sizes[f]; ++i) face.push_back(vmap[in.face_indices[o + i]]);
+    for (std::uint32_t i = 0; i < in.face_sizes[f]; ++i)
+      face.push_back(vmap[in.face_indices[o + i]]);
     o += in.face_sizes[f];
     if (out.add_face(face) == Mesh::null_face()) {
       // The checks above should make this unreachable; say so if it is not.
       out.clear();
-      return Status::error(Status_code::internal_error,
-                           "face " + std::to_string(f) +
-                               " passed the mesh checks but the halfedge structure refused it");
+      return Status::error(
+          Status_code::internal_error,
+          "face " + std::to_string(f) +
+              " passed the mesh checks but the halfedge structure refused it");
     }
   }
   return Status::success();
@@ -341,10 +356,12 @@ Mesh_buffers to_buffers(const Mesh& mesh) {
     out.positions.push_back(p.z());
   }
   out.face_sizes.reserve(mesh.number_of_faces());
-  out.face_indices.reserve(mesh.number_of_halfedges() / 2 + mesh.number_of_faces());
+  out.face_indices.reserve(mesh.number_of_halfedges() / 2 +
+                           mesh.number_of_faces());
   for (Mesh::Face_index f : mesh.faces()) {
     std::uint32_t k = 0;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+    for (Mesh::Vertex_index v :
+         CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
       out.face_indices.push_back(number[v.idx()]);
       ++k;
     }

@@ -33,7 +33,8 @@ struct Check_result {
 /// indices in range and no repeated vertex, then edges used by at most two
 /// faces, edges used in opposite directions, and vertices whose faces form a
 /// single fan. Isolated vertices are not an error (build_mesh drops them).
-Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming = {});
+Check_result check_buffers(const Mesh_buffers& in,
+                           const Check_naming& naming = {});
 
 /// Copy of `in` without the vertices no face uses; the others keep their
 /// relative order. Returns `in` unchanged (as a copy) when all are used.

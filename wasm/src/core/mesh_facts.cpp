@@ -27,21 +27,30 @@ Mesh_facts compute_facts(const Mesh& mesh) {
   for (Mesh::Halfedge_index h : mesh.halfedges()) {
     if (!mesh.is_border(h) || seen[h.idx()]) continue;
     ++facts.boundaries;
-    for (Mesh::Halfedge_index g = h; !seen[g.idx()]; g = mesh.next(g)) seen[g.idx()] = true;
+    for (Mesh::Halfedge_index g = h; !seen[g.idx()]; g = mesh.next(g))
+      seen[g.idx()] = true;
   }
 
-  facts.euler_characteristic = static_cast<long>(facts.vertices) - static_cast<long>(facts.edges) +
+  facts.euler_characteristic = static_cast<long>(facts.vertices) -
+                               static_cast<long>(facts.edges) +
                                static_cast<long>(facts.faces);
-  facts.genus = (2 * static_cast<long>(facts.components) - facts.euler_characteristic -
-                 static_cast<long>(facts.boundaries)) /
-                2;
+  facts.genus =
+      (2 * static_cast<long>(facts.components) - facts.euler_characteristic -
+       static_cast<long>(facts.boundaries)) /
+      2;
   facts.closed = facts.boundaries == 0;
 
   for (Mesh::Face_index f : mesh.faces()) {
     switch (mesh.degree(f)) {
-      case 3: ++facts.triangles; break;
-      case 4: ++facts.quads; break;
-      default: ++facts.other_faces; break;
+      case 3:
+        ++facts.triangles;
+        break;
+      case 4:
+        ++facts.quads;
+        break;
+      default:
+        ++facts.other_faces;
+        break;
     }
   }
 

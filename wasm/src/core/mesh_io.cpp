@@ -41,10 +41,12 @@ class Line_reader {
     while (pos_ < text_.size()) {
       const std::size_t begin = pos_;
       std::size_t end = begin;
-      while (end < text_.size() && text_[end] != '\n' && text_[end] != '\r') ++end;
+      while (end < text_.size() && text_[end] != '\n' && text_[end] != '\r')
+        ++end;
       pos_ = end;
       if (pos_ < text_.size()) {
-        const bool crlf = text_[pos_] == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n';
+        const bool crlf = text_[pos_] == '\r' && pos_ + 1 < text_.size() &&
+                          text_[pos_ + 1] == '\n';
         pos_ += crlf ? 2 : 1;
       }
       ++line_;
@@ -98,12 +100,15 @@ Number parse_double(std::string_view tok, double& out) {
   std::string_view body = tok;
   if (body[0] == '+' || body[0] == '-') body.remove_prefix(1);
   std::string lower(body);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "inf" || lower == "infinity" || lower == "nan" || lower.rfind("nan(", 0) == 0) {
+  for (char& c : lower)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "inf" || lower == "infinity" || lower == "nan" ||
+      lower.rfind("nan(", 0) == 0) {
     return Number::not_finite;
   }
   for (char c : tok) {
-    const bool ok = (c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
+    const bool ok = (c >= '0' && c <= '9') || c == '.' || c == 'e' ||
+                    c == 'E' || c == '+' || c == '-';
     if (!ok) return Number::not_number;
   }
   char buf[408];
@@ -144,13 +149,14 @@ std::string quoted(std::string_view tok) {
 
 Result<Mesh_buffers> parse_fail(int line, const std::string& what) {
   Result<Mesh_buffers> r;
-  r.status = Status::error(Status_code::parse_error, (line > 0 ? at(line) : "") + what, line);
+  r.status = Status::error(Status_code::parse_error,
+                           (line > 0 ? at(line) : "") + what, line);
   return r;
 }
 
 /// Reads one coordinate; on failure fills `r` with the reason.
-bool read_coordinate(std::string_view tok, int line, const std::string& what, double& out,
-                     Result<Mesh_buffers>& r) {
+bool read_coordinate(std::string_view tok, int line, const std::string& what,
+                     double& out, Result<Mesh_buffers>& r) {
   switch (parse_double(tok, out)) {
     case Number::ok:
       return true;
@@ -168,7 +174,8 @@ const char* const axis_name[3] = {"x", "y", "z"};
 
 /// The checks build_mesh makes, with faces named by their lines; then the
 /// isolated vertices go.
-Result<Mesh_buffers> finish(Mesh_buffers&& mesh, const std::vector<int>& face_lines,
+Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
+                            const std::vector<int>& face_lines,
                             std::uint32_t vertex_offset) {
   detail::Check_naming naming;
   naming.face_lines = &face_lines;
@@ -189,7 +196,8 @@ Result<Mesh_buffers> read_off(std::string_view text) {
   Line_reader in(text);
   std::vector<std::string_view> tok;
   int line = 0;
-  if (!in.next(tok, line)) return parse_fail(0, "the file is empty: no OFF header");
+  if (!in.next(tok, line))
+    return parse_fail(0, "the file is empty: no OFF header");
 
   // Header keyword: [ST][C][N][4][n]OFF, optionally followed by the counts.
   std::string_view key = tok[0];
@@ -200,44 +208,56 @@ Result<Mesh_buffers> read_off(std::string_view text) {
     if (k.substr(0, 1) == "C") colours = true, k.remove_prefix(1);
     if (k.substr(0, 1) == "N") normals = true, k.remove_prefix(1);
     if (k == "4OFF" || k == "4nOFF") {
-      return parse_fail(line, "4D OFF (" + std::string(key) +
-                                  ") is not supported: SubdivLab reads 3D meshes");
+      return parse_fail(line,
+                        "4D OFF (" + std::string(key) +
+                            ") is not supported: SubdivLab reads 3D meshes");
     }
     if (k == "nOFF") {
-      return parse_fail(line, "nOFF (" + std::string(key) +
-                                  ", dimension given in the file) is not supported");
+      return parse_fail(line,
+                        "nOFF (" + std::string(key) +
+                            ", dimension given in the file) is not supported");
     }
     if (k != "OFF") {
-      return parse_fail(line, "unknown OFF header " + quoted(key) +
-                                  " (expected OFF, COFF, NOFF, CNOFF, STOFF or another "
-                                  "[ST][C][N]OFF variant)");
+      return parse_fail(
+          line, "unknown OFF header " + quoted(key) +
+                    " (expected OFF, COFF, NOFF, CNOFF, STOFF or another "
+                    "[ST][C][N]OFF variant)");
     }
   }
   std::size_t c0 = 1;
   if (tok.size() > 1 && tok[1] == "BINARY") {
-    return parse_fail(line, "binary OFF is not supported; save the mesh as text OFF");
+    return parse_fail(line,
+                      "binary OFF is not supported; save the mesh as text OFF");
   }
   if (tok.size() == 1) {
-    if (!in.next(tok, line)) return parse_fail(in.last_line(), "file ends before the counts line");
+    if (!in.next(tok, line))
+      return parse_fail(in.last_line(), "file ends before the counts line");
     c0 = 0;
   }
   const std::size_t n_counts = tok.size() - c0;
   if (n_counts < 2 || n_counts > 3) {
-    return parse_fail(line, "expected the counts 'vertices faces edges', found " +
-                                std::to_string(n_counts) + " values");
+    return parse_fail(line,
+                      "expected the counts 'vertices faces edges', found " +
+                          std::to_string(n_counts) + " values");
   }
   long long nv_ll = 0, nf_ll = 0, ne_ll = 0;
   const char* count_name[3] = {"vertex", "face", "edge"};
   long long* count_val[3] = {&nv_ll, &nf_ll, &ne_ll};
   for (std::size_t i = 0; i < n_counts; ++i) {
     if (!parse_int(tok[c0 + i], *count_val[i]) || *count_val[i] < 0) {
-      return parse_fail(line, std::string(count_name[i]) + " count " + quoted(tok[c0 + i]) +
+      return parse_fail(line, std::string(count_name[i]) + " count " +
+                                  quoted(tok[c0 + i]) +
                                   " is not a non-negative integer");
     }
   }
-  if (nv_ll > 0xfffffffell) return parse_fail(line, "vertex count " + std::to_string(nv_ll) + " is too large");
-  if (nf_ll > 0xfffffffell) return parse_fail(line, "face count " + std::to_string(nf_ll) + " is too large");
-  const std::size_t nv = static_cast<std::size_t>(nv_ll), nf = static_cast<std::size_t>(nf_ll);
+  if (nv_ll > 0xfffffffell)
+    return parse_fail(
+        line, "vertex count " + std::to_string(nv_ll) + " is too large");
+  if (nf_ll > 0xfffffffell)
+    return parse_fail(line,
+                      "face count " + std::to_string(nf_ll) + " is too large");
+  const std::size_t nv = static_cast<std::size_t>(nv_ll),
+                    nf = static_cast<std::size_t>(nf_ll);
 
   // Each vertex takes at least "0 0 0\n", each face "3 0 1 2\n": a count the
   // remaining text cannot hold must not reserve memory.
@@ -245,29 +265,36 @@ Result<Mesh_buffers> read_off(std::string_view text) {
   const std::size_t left = in.remaining();
   mesh.positions.reserve(3 * std::min(nv, left / 6 + 1));
   mesh.face_sizes.reserve(std::min(nf, left / 8 + 1));
-  mesh.face_indices.reserve(std::min<std::uint64_t>(3 * std::uint64_t(nf), left / 2 + 1));
+  mesh.face_indices.reserve(
+      std::min<std::uint64_t>(3 * std::uint64_t(nf), left / 2 + 1));
   std::vector<int> face_lines;
   face_lines.reserve(mesh.face_sizes.capacity());
 
-  const std::size_t min_values = 3 + (normals ? 3 : 0) + (colours ? 3 : 0) + (texture ? 2 : 0);
+  const std::size_t min_values =
+      3 + (normals ? 3 : 0) + (colours ? 3 : 0) + (texture ? 2 : 0);
   for (std::size_t v = 0; v < nv; ++v) {
     if (!in.next(tok, line)) {
-      return parse_fail(in.last_line(), "file ends after " + std::to_string(v) + " of " +
-                                            std::to_string(nv) + " vertices");
+      return parse_fail(in.last_line(), "file ends after " + std::to_string(v) +
+                                            " of " + std::to_string(nv) +
+                                            " vertices");
     }
     if (tok.size() < min_values) {
       std::string need = "x y z";
       if (normals) need += ", a normal";
       if (colours) need += ", a colour";
       if (texture) need += ", texture coordinates";
-      return parse_fail(line, "vertex " + std::to_string(v) + " has " + std::to_string(tok.size()) +
-                                  " values; " + std::string(key) + " needs at least " +
-                                  std::to_string(min_values) + " (" + need + ")");
+      return parse_fail(line, "vertex " + std::to_string(v) + " has " +
+                                  std::to_string(tok.size()) + " values; " +
+                                  std::string(key) + " needs at least " +
+                                  std::to_string(min_values) + " (" + need +
+                                  ")");
     }
     for (int a = 0; a < 3; ++a) {
       double x = 0;
       Result<Mesh_buffers> r;
-      if (!read_coordinate(tok[a], line, std::string(axis_name[a]) + " coordinate of vertex " + std::to_string(v),
+      if (!read_coordinate(tok[a], line,
+                           std::string(axis_name[a]) +
+                               " coordinate of vertex " + std::to_string(v),
                            x, r)) {
         return r;
       }
@@ -277,7 +304,8 @@ Result<Mesh_buffers> read_off(std::string_view text) {
     for (std::size_t i = 3; i < tok.size(); ++i) {
       double x = 0;
       if (parse_double(tok[i], x) == Number::not_number) {
-        return parse_fail(line, "value " + std::to_string(i + 1) + " of vertex " + std::to_string(v) +
+        return parse_fail(line, "value " + std::to_string(i + 1) +
+                                    " of vertex " + std::to_string(v) +
                                     " is not a number: " + quoted(tok[i]));
       }
     }
@@ -285,36 +313,44 @@ Result<Mesh_buffers> read_off(std::string_view text) {
 
   for (std::size_t f = 0; f < nf; ++f) {
     if (!in.next(tok, line)) {
-      return parse_fail(in.last_line(), "file ends after " + std::to_string(f) + " of " +
-                                            std::to_string(nf) + " faces");
+      return parse_fail(in.last_line(), "file ends after " + std::to_string(f) +
+                                            " of " + std::to_string(nf) +
+                                            " faces");
     }
     long long k = 0;
     if (!parse_int(tok[0], k) || k < 0) {
-      return parse_fail(line, "face " + std::to_string(f) + " must start with its vertex count, found " +
-                                  quoted(tok[0]) + " (do the header counts match the data?)");
+      return parse_fail(line, "face " + std::to_string(f) +
+                                  " must start with its vertex count, found " +
+                                  quoted(tok[0]) +
+                                  " (do the header counts match the data?)");
     }
     const std::size_t listed = tok.size() - 1;
     if (static_cast<unsigned long long>(k) > listed) {
-      return parse_fail(line, "face " + std::to_string(f) + " declares " + std::to_string(k) +
-                                  " vertices but lists only " + std::to_string(listed));
+      return parse_fail(
+          line, "face " + std::to_string(f) + " declares " + std::to_string(k) +
+                    " vertices but lists only " + std::to_string(listed));
     }
     const std::size_t extra = listed - static_cast<std::size_t>(k);
     if (extra > 4) {
-      return parse_fail(line, "face " + std::to_string(f) + " declares " + std::to_string(k) +
-                                  " vertices but the line has " + std::to_string(extra) +
-                                  " more values (at most 4, a colour, may follow the indices)");
+      return parse_fail(
+          line,
+          "face " + std::to_string(f) + " declares " + std::to_string(k) +
+              " vertices but the line has " + std::to_string(extra) +
+              " more values (at most 4, a colour, may follow the indices)");
     }
     for (std::size_t i = 1; i <= static_cast<std::size_t>(k); ++i) {
       long long index = 0;
       if (!parse_int(tok[i], index)) {
-        return parse_fail(line, "face index " + quoted(tok[i]) + " is not an integer");
+        return parse_fail(
+            line, "face index " + quoted(tok[i]) + " is not an integer");
       }
       if (index < 0 || static_cast<unsigned long long>(index) >= nv) {
         Result<Mesh_buffers> r;
-        r.status = Status::error(Status_code::invalid_mesh,
-                                 at(line) + "face index " + std::to_string(index) + " is out of range (" +
-                                     std::to_string(nv) + " vertices)",
-                                 line);
+        r.status = Status::error(
+            Status_code::invalid_mesh,
+            at(line) + "face index " + std::to_string(index) +
+                " is out of range (" + std::to_string(nv) + " vertices)",
+            line);
         return r;
       }
       mesh.face_indices.push_back(static_cast<std::uint32_t>(index));
@@ -322,8 +358,8 @@ Result<Mesh_buffers> read_off(std::string_view text) {
     for (std::size_t i = 1 + static_cast<std::size_t>(k); i < tok.size(); ++i) {
       double x = 0;
       if (parse_double(tok[i], x) == Number::not_number) {
-        return parse_fail(line, "colour value of face " + std::to_string(f) + " is not a number: " +
-                                    quoted(tok[i]));
+        return parse_fail(line, "colour value of face " + std::to_string(f) +
+                                    " is not a number: " + quoted(tok[i]));
       }
     }
     mesh.face_sizes.push_back(static_cast<std::uint32_t>(k));
@@ -331,7 +367,8 @@ Result<Mesh_buffers> read_off(std::string_view text) {
   }
   if (in.next(tok, line)) {
     return parse_fail(line, "extra data after the " + std::to_string(nf) +
-                                " faces the header declares (header counts disagree with the data)");
+                                " faces the header declares (header counts "
+                                "disagree with the data)");
   }
   return finish(std::move(mesh), face_lines, 0);
 }
@@ -342,10 +379,12 @@ Result<Mesh_buffers> read_off(std::string_view text) {
 /// smoothing, texture and normal data, lines, points, free-form geometry).
 bool is_ignored_obj_statement(std::string_view k) {
   static const char* const ignored[] = {
-      "o", "g", "s", "usemtl", "mtllib", "l", "p", "vt", "vn", "vp", "mg", "lod", "bevel",
-      "c_interp", "d_interp", "usemap", "maplib", "shadow_obj", "trace_obj", "ctech", "stech",
-      "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv",
-      "sp", "end", "con"};
+      "o",         "g",        "s",        "usemtl", "mtllib", "l",
+      "p",         "vt",       "vn",       "vp",     "mg",     "lod",
+      "bevel",     "c_interp", "d_interp", "usemap", "maplib", "shadow_obj",
+      "trace_obj", "ctech",    "stech",    "cstype", "deg",    "bmat",
+      "step",      "curv",     "curv2",    "surf",   "parm",   "trim",
+      "hole",      "scrv",     "sp",       "end",    "con"};
   for (const char* s : ignored) {
     if (k == s) return true;
   }
@@ -378,13 +417,16 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
     const std::string_view k = tok[0];
     if (k == "v") {
       if (tok.size() < 4) {
-        return parse_fail(line, "vertex needs 3 coordinates, found " + std::to_string(tok.size() - 1));
+        return parse_fail(line, "vertex needs 3 coordinates, found " +
+                                    std::to_string(tok.size() - 1));
       }
       const std::size_t v = mesh.vertex_count() + 1;
       for (int a = 0; a < 3; ++a) {
         double x = 0;
         Result<Mesh_buffers> r;
-        if (!read_coordinate(tok[1 + a], line, std::string(axis_name[a]) + " coordinate of vertex " + std::to_string(v),
+        if (!read_coordinate(tok[1 + a], line,
+                             std::string(axis_name[a]) +
+                                 " coordinate of vertex " + std::to_string(v),
                              x, r)) {
           return r;
         }
@@ -394,7 +436,8 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
       for (std::size_t i = 4; i < tok.size(); ++i) {
         double x = 0;
         if (parse_double(tok[i], x) == Number::not_number) {
-          return parse_fail(line, "value " + std::to_string(i) + " of vertex " + std::to_string(v) +
+          return parse_fail(line, "value " + std::to_string(i) + " of vertex " +
+                                      std::to_string(v) +
                                       " is not a number: " + quoted(tok[i]));
         }
       }
@@ -403,23 +446,31 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
       for (std::size_t i = 1; i < tok.size(); ++i) {
         long long v = 0;
         if (!parse_obj_corner(tok[i], v)) {
-          return parse_fail(line, quoted(tok[i]) + " is not a face vertex (expected v, v/vt, v//vn or v/vt/vn)");
+          return parse_fail(
+              line,
+              quoted(tok[i]) +
+                  " is not a face vertex (expected v, v/vt, v//vn or v/vt/vn)");
         }
         long long index = 0;  // 0-based
         if (v == 0) {
           Result<Mesh_buffers> r;
-          r.status = Status::error(Status_code::invalid_mesh,
-                                   at(line) + "face index 0 is out of range (OBJ indices start at 1)", line);
+          r.status = Status::error(
+              Status_code::invalid_mesh,
+              at(line) +
+                  "face index 0 is out of range (OBJ indices start at 1)",
+              line);
           return r;
         }
         if (v < 0) {
           index = defined + v;
           if (index < 0) {
             Result<Mesh_buffers> r;
-            r.status = Status::error(Status_code::invalid_mesh,
-                                     at(line) + "relative face index " + std::to_string(v) + " is out of range (" +
-                                         std::to_string(defined) + " vertices defined so far)",
-                                     line);
+            r.status = Status::error(
+                Status_code::invalid_mesh,
+                at(line) + "relative face index " + std::to_string(v) +
+                    " is out of range (" + std::to_string(defined) +
+                    " vertices defined so far)",
+                line);
             return r;
           }
         } else {
@@ -449,7 +500,8 @@ void append_number(std::string& out, double x) {
 
 void append_uint(std::string& out, std::uint64_t x) {
   char buf[24];
-  const int n = std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(x));
+  const int n = std::snprintf(buf, sizeof buf, "%llu",
+                              static_cast<unsigned long long>(x));
   out.append(buf, static_cast<std::size_t>(n));
 }
 
@@ -460,12 +512,14 @@ Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format) {
     return format == Mesh_format::off ? read_off(text) : read_obj(text);
   } catch (const std::bad_alloc&) {
     Result<Mesh_buffers> r;
-    r.status = Status::error(Status_code::too_large, "out of memory while reading the mesh");
+    r.status = Status::error(Status_code::too_large,
+                             "out of memory while reading the mesh");
     return r;
   } catch (const std::exception& e) {
     Result<Mesh_buffers> r;
-    r.status = Status::error(Status_code::internal_error,
-                             std::string("unexpected failure while reading the mesh: ") + e.what());
+    r.status = Status::error(
+        Status_code::internal_error,
+        std::string("unexpected failure while reading the mesh: ") + e.what());
     return r;
   }
 }
