@@ -107,7 +107,11 @@ export class SubdivViewer {
       facts: level?.data.facts ?? null,
       stepMs: level && this.current > 0 ? level.data.ms : null,
       renderMode: this.view.renderMode,
-      overlays: { control: this.view.overlay('control'), bbox: this.view.overlay('bbox') },
+      overlays: {
+        control: this.view.overlay('control'),
+        bbox: this.view.overlay('bbox'),
+        curves: this.view.overlay('curves'),
+      },
       busy: this.busyState,
     };
   }
@@ -240,11 +244,17 @@ export class SubdivViewer {
   exportSvg(transparent = false): string {
     const level = this.requireLevel();
     const control = this.view.overlay('control') ? this.levels[0].data.buffers : null;
+    const { mesh } = level.data;
+    const curves =
+      this.view.overlay('curves') && mesh.controlEdges.length > 0
+        ? { positions: mesh.positions, edges: mesh.controlEdges }
+        : null;
     return exportSvg({
-      mesh: level.data.mesh,
+      mesh,
       camera: this.view.camera,
       ...this.view.size,
       control,
+      curves,
       background: !transparent,
     });
   }
@@ -313,7 +323,7 @@ export class SubdivViewer {
   }
 
   private graphicsOf(level: Level): LevelGraphics {
-    if (!level.graphics) level.graphics = new LevelGraphics(level.data.buffers);
+    if (!level.graphics) level.graphics = new LevelGraphics(level.data.buffers, level.data.mesh.controlEdges);
     return level.graphics;
   }
 

@@ -12,8 +12,10 @@ export class LevelGraphics {
   readonly surface: BufferGeometry;
   /** Polygon edges as line segments. */
   readonly edges: BufferGeometry;
+  /** The marked control edges of this level (null when the core marked none). */
+  readonly curves: BufferGeometry | null;
 
-  constructor(buffers: RenderBuffers) {
+  constructor(buffers: RenderBuffers, controlEdges: Uint32Array = new Uint32Array(0)) {
     const position = new BufferAttribute(buffers.positions, 3);
     this.surface = new BufferGeometry();
     this.surface.setAttribute('position', position);
@@ -24,6 +26,13 @@ export class LevelGraphics {
     this.edges = new BufferGeometry();
     this.edges.setAttribute('position', position);
     this.edges.setIndex(new BufferAttribute(buffers.edges, 1));
+
+    this.curves = null;
+    if (controlEdges.length > 0) {
+      this.curves = new BufferGeometry();
+      this.curves.setAttribute('position', position);
+      this.curves.setIndex(new BufferAttribute(controlEdges, 1));
+    }
   }
 
   /** Bounding sphere of the surface. */
@@ -36,5 +45,6 @@ export class LevelGraphics {
   dispose(): void {
     this.surface.dispose();
     this.edges.dispose();
+    this.curves?.dispose();
   }
 }

@@ -15,5 +15,12 @@ export function nextRenderMode(mode: RenderMode): RenderMode {
   return RENDER_MODES[(i + 1) % RENDER_MODES.length].mode;
 }
 
-/** Overlays drawn on top of the surface; issue 4 adds control-edge curves here. */
-export type OverlayName = 'control' | 'bbox';
+/**
+ * Overlays drawn with the surface: the level-0 edges, the bounding box, and
+ * the control-edge curves (edges of the shown level that lie on level-0
+ * edges, as the core marks them for primal schemes).
+ */
+export type OverlayName = 'control' | 'bbox' | 'curves';
+
+/** All overlays, in display order. */
+export const OVERLAY_NAMES: readonly OverlayName[] = ['control', 'bbox', 'curves'];

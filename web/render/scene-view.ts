@@ -34,6 +34,7 @@ export const VIEW_COLORS = {
   surface: '#8db4dc',
   edges: '#1f2d3d',
   control: '#e8590c',
+  curves: '#c2255c',
   bbox: '#6b7280',
 } as const;
 
@@ -53,12 +54,14 @@ export class SceneView {
   private readonly surface: Mesh;
   private readonly edgeLines: LineSegments;
   private readonly controlLines: LineSegments;
+  private readonly curveLines: LineSegments;
   private readonly smoothMaterial: MeshLambertMaterial;
   private readonly flatMaterial: MeshLambertMaterial;
   private bboxHelper: Box3Helper | null = null;
   private readonly overlays = new Map<OverlayName, boolean>([
     ['control', false],
     ['bbox', false],
+    ['curves', false],
   ]);
   private mode: RenderMode = 'smooth';
   private radius = 1;
@@ -96,7 +99,9 @@ export class SceneView {
     this.edgeLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.edges }));
     this.controlLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.control }));
     this.controlLines.renderOrder = 1;
-    for (const object of [this.surface, this.edgeLines, this.controlLines]) {
+    this.curveLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.curves }));
+    this.curveLines.renderOrder = 2;
+    for (const object of [this.surface, this.edgeLines, this.controlLines, this.curveLines]) {
       object.visible = false;
       object.frustumCulled = false;
       this.scene.add(object);
@@ -133,8 +138,10 @@ export class SceneView {
     if (graphics) {
       this.surface.geometry = graphics.surface;
       this.edgeLines.geometry = graphics.edges;
+      if (graphics.curves) this.curveLines.geometry = graphics.curves;
     }
     this.surface.userData.hasLevel = graphics !== null;
+    this.curveLines.userData.hasLevel = graphics?.curves != null;
     this.applyVisibility();
   }
 
@@ -320,6 +327,7 @@ export class SceneView {
     this.flatMaterial.dispose();
     (this.edgeLines.material as LineBasicMaterial).dispose();
     (this.controlLines.material as LineBasicMaterial).dispose();
+    (this.curveLines.material as LineBasicMaterial).dispose();
     this.renderer.dispose();
     this.canvas.remove();
   }
@@ -329,6 +337,7 @@ export class SceneView {
     this.surface.visible = hasLevel && this.mode !== 'wireframe';
     this.edgeLines.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
     this.controlLines.visible = this.controlLines.userData.hasLevel === true && this.overlay('control');
+    this.curveLines.visible = this.curveLines.userData.hasLevel === true && this.overlay('curves');
     if (this.bboxHelper) this.bboxHelper.visible = this.overlay('bbox');
     this.dirty = true;
   }

@@ -9,6 +9,12 @@ import { Color, type PerspectiveCamera, Vector3 } from 'three';
 import type { Mesh } from '../core/mesh';
 import { LIGHT_IN_CAMERA, LIGHT_SHARES, VIEW_COLORS } from './scene-view';
 
+/** Positions (xyz) and vertex index pairs of line segments. */
+export interface LineSet {
+  positions: ArrayLike<number>;
+  edges: ArrayLike<number>;
+}
+
 export interface SvgExportInput {
   /** The level shown. */
   mesh: Mesh;
@@ -17,7 +23,9 @@ export interface SvgExportInput {
   width: number;
   height: number;
   /** Level-0 positions and polygon edges, when the control-mesh overlay is shown. */
-  control?: { positions: ArrayLike<number>; edges: ArrayLike<number> } | null;
+  control?: LineSet | null;
+  /** The shown level's marked control edges, when the control-edge curves are shown. */
+  curves?: LineSet | null;
   /** Fill the background (false: transparent). */
   background: boolean;
 }
@@ -107,26 +115,29 @@ export function exportSvg(input: SvgExportInput): string {
   out.push(`<g id="faces" stroke="${VIEW_COLORS.edges}" stroke-width="0.6" stroke-linejoin="round">`);
   for (const f of faces) out.push(`<polygon points="${f.points}" fill="${f.fill}"/>`);
   out.push('</g>');
-  if (input.control) out.push(controlPath(input.control, camera, width, height));
+  if (input.curves) out.push(linePath(input.curves, 'control-curves', VIEW_COLORS.curves, camera, width, height));
+  if (input.control) out.push(linePath(input.control, 'control-mesh', VIEW_COLORS.control, camera, width, height));
   out.push('</svg>');
   return `${out.join('\n')}\n`;
 }
 
-/** The control mesh's edges as one path, drawn over the faces. */
-function controlPath(
-  control: { positions: ArrayLike<number>; edges: ArrayLike<number> },
+/** Line segments as one path (id `id`), drawn over the faces. */
+function linePath(
+  lines: LineSet,
+  id: string,
+  color: string,
   camera: PerspectiveCamera,
   width: number,
   height: number,
 ): string {
   const v = new Vector3();
   const project = (i: number): string => {
-    v.set(control.positions[3 * i], control.positions[3 * i + 1], control.positions[3 * i + 2]).project(camera);
+    v.set(lines.positions[3 * i], lines.positions[3 * i + 1], lines.positions[3 * i + 2]).project(camera);
     return `${n(((v.x + 1) / 2) * width)} ${n(((1 - v.y) / 2) * height)}`;
   };
   const d: string[] = [];
-  for (let e = 0; e + 1 < control.edges.length; e += 2) {
-    d.push(`M${project(control.edges[e])}L${project(control.edges[e + 1])}`);
+  for (let e = 0; e + 1 < lines.edges.length; e += 2) {
+    d.push(`M${project(lines.edges[e])}L${project(lines.edges[e + 1])}`);
   }
-  return `<path id="control-mesh" fill="none" stroke="${VIEW_COLORS.control}" stroke-width="1.2" d="${d.join('')}"/>`;
+  return `<path id="${id}" fill="none" stroke="${color}" stroke-width="1.2" d="${d.join('')}"/>`;
 }

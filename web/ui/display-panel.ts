@@ -11,10 +11,11 @@ export interface DisplayPanelHandlers {
   onRestoreView: () => void;
 }
 
-/** Overlay toggles in display order; issue 4 adds control-edge curves here. */
+/** Overlay toggles in display order. */
 const OVERLAYS: readonly { name: OverlayName; label: string; key: string }[] = [
   { name: 'control', label: 'Control mesh (level 0 edges)', key: 'c' },
   { name: 'bbox', label: 'Bounding box', key: 'b' },
+  { name: 'curves', label: 'Control-edge curves', key: 'e' },
 ];
 
 export class DisplayPanel {
@@ -58,6 +59,9 @@ export class DisplayPanel {
   update(state: ViewerState, hasSavedView: boolean): void {
     this.mode.value = state.renderMode;
     for (const [name, input] of this.toggles) input.checked = state.overlays[name];
+    // Curves exist only where the core marked control edges (primal schemes).
+    const curves = this.toggles.get('curves');
+    if (curves) curves.disabled = !state.facts || state.facts.controlEdges === 0;
     this.restore.disabled = !hasSavedView;
   }
 }

@@ -1,9 +1,10 @@
 /** Keyboard shortcuts of the app; ignored while typing in a field or while a dialog is open. */
+import type { OverlayName } from '../render/render-mode';
 
 export interface ShortcutHandlers {
   subdivide: () => void;
   cycleRenderMode: () => void;
-  toggleOverlay: (name: 'control' | 'bbox') => void;
+  toggleOverlay: (name: OverlayName) => void;
   fit: () => void;
   stepLevel: (delta: number) => void;
   open: () => void;
@@ -18,6 +19,7 @@ export const SHORTCUTS: readonly { keys: string; action: string }[] = [
   { keys: 'R', action: 'Cycle render modes' },
   { keys: 'C', action: 'Toggle the control-mesh overlay' },
   { keys: 'B', action: 'Toggle the bounding box' },
+  { keys: 'E', action: 'Toggle the control-edge curves' },
   { keys: 'F', action: 'Fit the view to the model' },
   { keys: 'O', action: 'Open a file' },
   { keys: '← ↑ → ↓', action: 'Rotate (the 3D view focused; with Shift: pan)' },
@@ -54,6 +56,7 @@ export function installShortcuts(root: Document, handlers: ShortcutHandlers, blo
       r: handlers.cycleRenderMode,
       c: () => handlers.toggleOverlay('control'),
       b: () => handlers.toggleOverlay('bbox'),
+      e: () => handlers.toggleOverlay('curves'),
       f: handlers.fit,
       '[': () => handlers.stepLevel(-1),
       ']': () => handlers.stepLevel(1),
