@@ -680,3 +680,63 @@ TEST(IoWrite, RoundTripOfAwkwardDoublesIsExact) {
 
 }  // namespace
 }  // namespace subdivlab
+
+namespace subdivlab {
+namespace {
+
+// The files in tests/fixtures/invalid serve the Node and CLI tests too;
+// this pins what each one must report.
+TEST(IoInvalidFixtures, EachFileReportsItsProblem) {
+  struct Expect {
+    const char* name;
+    Status_code code;
+    int line;
+    const char* message;
+  };
+  const Expect cases[] = {
+      {"index-out-of-range.off", Status_code::invalid_mesh, 8,
+       "line 8: face index 12 is out of range (4 vertices)"},
+      {"truncated.off", Status_code::parse_error, 7,
+       "line 7: file ends after 5 of 8 vertices"},
+      {"non-finite.off", Status_code::parse_error, 4,
+       "line 4: y coordinate of vertex 1 is not finite: 'nan'"},
+      {"non-manifold-edge.off", Status_code::invalid_mesh, 10,
+       "line 10: non-manifold edge between vertices 0 and 1: used by 3 faces "
+       "(the faces on lines 8, 9 and 10)"},
+      {"non-manifold-vertex.off", Status_code::invalid_mesh, 9,
+       "line 9: non-manifold vertex 0: its faces form 2 separate fans that "
+       "meet only at this vertex (the faces on lines 8 and 9)"},
+      {"inconsistent-orientation.off", Status_code::invalid_mesh, 8,
+       "line 8: inconsistent orientation: the faces on lines 7 and 8 both use "
+       "edge 0\u21921 in the same direction"},
+      {"extra-data.off", Status_code::parse_error, 10,
+       "line 10: extra data after the 3 faces the header declares (header "
+       "counts disagree with the data)"},
+      {"no-faces.off", Status_code::invalid_mesh, 0, "the mesh has no faces"},
+      {"huge-counts.off", Status_code::parse_error, 1,
+       "line 1: file ends after 0 of 2000000000 vertices"},
+      {"unknown-header.off", Status_code::parse_error, 1,
+       "line 1: unknown OFF header 'PLY' (expected OFF, COFF, NOFF, CNOFF, "
+       "STOFF or another [ST][C][N]OFF variant)"},
+      {"repeated-vertex.obj", Status_code::invalid_mesh, 4,
+       "line 4: the face uses vertex 3 more than once"},
+      {"face-too-small.obj", Status_code::invalid_mesh, 4,
+       "line 4: the face has 2 vertices; a face needs at least 3"},
+      {"non-numeric.obj", Status_code::parse_error, 2,
+       "line 2: y coordinate of vertex 2 is not a number: 'abc'"},
+  };
+  for (const Expect& e : cases) {
+    const std::string name = e.name;
+    const Mesh_format format = name.substr(name.size() - 4) == ".obj"
+                                   ? Mesh_format::obj
+                                   : Mesh_format::off;
+    const Result<Mesh_buffers> r =
+        read_mesh(fixture("invalid/" + name), format);
+    EXPECT_EQ(r.status.code, e.code) << name << ": " << r.status.message;
+    EXPECT_EQ(r.status.line, e.line) << name;
+    EXPECT_EQ(r.status.message, e.message) << name;
+  }
+}
+
+}  // namespace
+}  // namespace subdivlab
