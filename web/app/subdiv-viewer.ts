@@ -24,7 +24,11 @@ export interface LargeStepInfo {
 }
 
 export interface SubdivViewerOptions {
-  /** The core; pass one to share a worker between viewers. Default: a new one, disposed with the viewer. */
+  /**
+   * The core. Default: a worker of its own, disposed with the viewer. Viewers
+   * may share one, but cancelling restarts it for all of them (their running
+   * requests then reject with CancelledError).
+   */
   client?: WorkerClient;
   scheme?: SchemeName;
   renderMode?: RenderMode;

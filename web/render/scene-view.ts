@@ -68,6 +68,9 @@ export class SceneView {
   private dirty = true;
   private frame = 0;
   private readonly resizeObserver: ResizeObserver;
+  private readonly visibilityObserver: IntersectionObserver;
+  /** Off screen (e.g. one of several embeds scrolled away): nothing is drawn. */
+  private onScreen = true;
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = new WebGLRenderer({ antialias: true, alpha: true });
@@ -123,10 +126,16 @@ export class SceneView {
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
+    this.visibilityObserver = new IntersectionObserver((entries) => {
+      this.onScreen = entries.some((entry) => entry.isIntersecting);
+      if (this.onScreen) this.dirty = true;
+    });
+    this.visibilityObserver.observe(container);
     this.resize();
     this.fitSphere(new Sphere(new Vector3(), 1));
     const loop = () => {
       this.frame = requestAnimationFrame(loop);
+      if (!this.onScreen) return;
       this.controls.update();
       if (this.dirty) this.render();
     };
@@ -321,6 +330,7 @@ export class SceneView {
   dispose(): void {
     cancelAnimationFrame(this.frame);
     this.resizeObserver.disconnect();
+    this.visibilityObserver.disconnect();
     this.controls.dispose();
     this.setBoundingBox(null, null);
     this.smoothMaterial.dispose();
