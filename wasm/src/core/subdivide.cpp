@@ -1,0 +1,680 @@
+// The subdivision schemes: options checked, mesh built, then one CGAL step
+// at a time, each preceded by a size check, then back to buffers.
+//
+// Schemes run through CGAL's Subdivision_method_3: Catmull-Clark (PQQ host),
+// Loop (PTQ), Doo-Sabin (DQQ; on open meshes the border-aware DQQ host of
+// dqq_border_3.h, as CGAL's has no border support) and sqrt(3) (its host
+// refines the border on every second step; the step parity is carried
+// through Subdivide_options::start_level).
+
+#include "subdivide.h"
+
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Subdivision_method_3/subdivision_hosts_3.h>
+#include <CGAL/Subdivision_method_3/subdivision_masks_3.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/exceptions.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <limits>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "dqq_border_3.h"
+#include "mesh_build.h"
+
+namespace subdivlab {
+namespace {
+
+namespace SM3 = CGAL::Subdivision_method_3;
+
+/// The schemes, in display order, and whether they need triangles.
+struct Scheme_entry {
+  const char* name;
+  bool needs_triangles;
+};
+
+const std::vector<Scheme_entry>& scheme_table() {
+  static const std::vector<Scheme_entry> table = {
+      {"catmull-clark", false},
+      {"loop", true},
+      {"doo-sabin", false},
+      {"sqrt3", true},
+  };
+  return table;
+}
+
+const Scheme_entry* find_scheme(const std::string& name) {
+  for (const Scheme_entry& s : scheme_table())
+    if (name == s.name) return &s;
+  return nullptr;
+}
+
+std::string scheme_list() {
+  std::string s;
+  for (const Scheme_entry& e : scheme_table()) {
+    if (!s.empty()) s += ", ";
+    s += e.name;
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------------------
+// Counts. Everything a step's result size depends on, kept in doubles so that
+// predictions far beyond 2^32 (and beyond size_t under wasm32) stay finite
+// and comparable.
+
+struct Counts {
+  double vertices = 0, edges = 0, faces = 0;
+  double border_edges = 0;   ///< = border vertices (vertices are manifold)
+  double border_ears = 0;    ///< border vertices of degree 2
+  double border_fans = 0;    ///< border vertices of degree >= 4
+  double non_triangles = 0;  ///< faces of degree != 3
+  double degree_excess = 0;  ///< sum over faces of (degree - 3)
+  /// Faces with two or more border edges (sqrt3's border step needs none).
+  double multi_border_faces = 0;
+
+  double degree_sum() const { return 2 * edges - border_edges; }
+};
+
+Counts counts_of(const Mesh& mesh) {
+  Counts c;
+  c.vertices = static_cast<double>(mesh.number_of_vertices());
+  c.edges = static_cast<double>(mesh.number_of_edges());
+  c.faces = static_cast<double>(mesh.number_of_faces());
+  for (Mesh::Halfedge_index h : mesh.halfedges()) {
+    if (!mesh.is_border(h)) continue;
+    c.border_edges += 1;
+    const auto d = mesh.degree(mesh.target(h));
+    if (d == 2) c.border_ears += 1;
+    if (d >= 4) c.border_fans += 1;
+  }
+  for (Mesh::Face_index f : mesh.faces()) {
+    std::size_t degree = 0, border = 0;
+    for (Mesh::Halfedge_index h :
+         CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      ++degree;
+      if (mesh.is_border(mesh.opposite(h))) ++border;
+    }
+    if (degree != 3) c.non_triangles += 1;
+    c.degree_excess += static_cast<double>(degree) - 3;
+    if (border >= 2) c.multi_border_faces += 1;
+  }
+  return c;
+}
+
+/// Counts after Polygon_mesh_processing::triangulate_faces: an n-gon becomes
+/// n - 2 triangles joined by n - 3 new edges; vertices and border unchanged.
+Counts triangulated(Counts c) {
+  c.edges += c.degree_excess;
+  c.faces += c.degree_excess;
+  c.non_triangles = 0;
+  c.degree_excess = 0;
+  return c;  // border degrees and multi-border faces: not needed by loop/sqrt3
+}
+
+/// True when step `global_step` (0-based, counted from the control mesh) of
+/// sqrt3 refines the border: CGAL's Sqrt3 does it on the odd steps of one
+/// call (i % 2 == 1); counting from the control mesh makes k calls of one
+/// level equal one call of k levels.
+bool sqrt3_refines_border(int global_step) { return global_step % 2 == 1; }
+
+/// Exact counts after one step. B border edges, S = sum of face degrees.
+Counts next_counts(const std::string& scheme, const Counts& c,
+                   int global_step) {
+  Counts n;
+  const double V = c.vertices, E = c.edges, F = c.faces, B = c.border_edges;
+  if (scheme == "catmull-clark") {
+    // Vertex, edge and face points; each corner becomes a quad.
+    n.vertices = V + E + F;
+    n.edges = 2 * E + c.degree_sum();
+    n.faces = c.degree_sum();
+    n.border_edges = 2 * B;
+    n.border_ears = c.border_ears;  // old border vertices keep their degree,
+    n.border_fans = c.border_fans;  // border edge points have degree 3
+  } else if (scheme == "loop") {
+    n.vertices = V + E;
+    n.edges = 2 * E + 3 * F;
+    n.faces = 4 * F;
+    n.border_edges = 2 * B;
+    n.border_ears = c.border_ears;
+    n.border_fans = c.border_fans + B;  // border edge points have degree 4
+  } else if (scheme == "doo-sabin") {
+    // See dqq_border_3.h for the border construction.
+    n.vertices = c.degree_sum() + c.border_ears;
+    n.edges = 4 * E - 3 * B + c.border_ears + c.border_fans;
+    n.faces = F + (E - B) + (V - B) + c.border_fans;
+    n.border_edges = 2 * B;
+    n.border_ears = 2 * c.border_ears;
+    n.border_fans = 2 * c.border_fans;
+    n.non_triangles = n.faces;  // not exact, unused by doo-sabin
+  } else if (scheme == "sqrt3") {
+    // A face point per face, old edges flipped: F' = 3F. On a border step
+    // each border edge also gets two points and its face splits into 3.
+    const double b = sqrt3_refines_border(global_step) ? B : 0;
+    n.vertices = V + F + b;
+    n.edges = E + 3 * F + b;
+    n.faces = 3 * F;
+    n.border_edges = B + 2 * b;
+  }
+  if (scheme == "catmull-clark") {
+    n.non_triangles = n.faces;
+    n.degree_excess = n.faces;  // all quads
+  }
+  return n;
+}
+
+// ---------------------------------------------------------------------------
+// Memory model. A step's peak is simulated from the allocations its host
+// makes, in the order it makes them; the figures were checked against a
+// counting operator new (tests/core/test_subdivide.cpp, SubdivideMemory,
+// which asserts measured <= model <= 1.5 x measured on every host).
+//
+// Bytes per element of a CGAL::Surface_mesh<Point_3> with double
+// coordinates (indices are 32-bit on every target):
+//   vertex   4 (halfedge) + 24 (point) + 1/8 (removed flag)
+//   halfedge 16 (face, vertex, next, prev)
+//   edge     1/8 (removed flag)
+//   face     4 (halfedge) + 1/8 (removed flag)
+// The mesh arrays are std::vectors: the model tracks their capacities, which
+// CGAL's hosts set with reserve() -- more than they keep: PQQ reserves 8E
+// edges for 2E + S, sqrt3 about twice its edges, PTQ too few faces (the face
+// arrays then double) -- and which persist into the next step (nothing
+// shrinks them but collect_garbage, run only when a host left removed
+// elements: CGAL's DQQ). Reallocating an array holds old and new blocks
+// together. Host temporaries: the descriptor backups (4 bytes per element),
+// point buffers (24 per point), PQQ/PTQ's std::unordered_map of vertices
+// (40 per vertex: a 32-byte node as malloc hands it out + an 8-byte bucket)
+// and sqrt3's std::list of new positions (64 per entry). Sizes are native
+// 64-bit ones, which bound wasm32's (its list/map nodes hold 4-byte
+// pointers). The input buffers live through the whole call and are added.
+
+constexpr double kVertexBytes = 28.125, kHalfedgeBytes = 16,
+                 kEdgeBytes = 0.125, kFaceBytes = 4.125;
+constexpr double kMapEntryBytes = 40, kListNodeBytes = 64;
+constexpr double kPointBytes = 24, kDescriptorBytes = 4;
+/// Allocator slack and small fixed allocations.
+constexpr double kSlackFactor = 1.03, kSlackBytes = 64 * 1024;
+
+/// Element capacities of the mesh arrays (halfedges counted separately).
+struct Caps {
+  double v = 0, h = 0, e = 0, f = 0;
+  static Caps exact(const Counts& c) {
+    return {c.vertices, 2 * c.edges, c.edges, c.faces};
+  }
+};
+
+double caps_bytes(const Caps& c) {
+  return c.v * kVertexBytes + c.h * kHalfedgeBytes + c.e * kEdgeBytes +
+         c.f * kFaceBytes;
+}
+
+/// Live and peak bytes of a simulated heap, with the mesh arrays in it.
+class Heap_model {
+ public:
+  Heap_model(double live, const Caps& caps) : live_(live), peak_(live), caps_(caps) {}
+  void alloc(double bytes) {
+    live_ += bytes;
+    peak_ = std::max(peak_, live_);
+  }
+  void release(double bytes) { live_ -= bytes; }
+  /// Surface_mesh::reserve(nv, ne, nf): each array reallocated if smaller.
+  void reserve(double nv, double ne, double nf) {
+    reserve_one(caps_.v, nv, kVertexBytes);
+    reserve_one(caps_.h, 2 * ne, kHalfedgeBytes);
+    reserve_one(caps_.e, ne, kEdgeBytes);
+    reserve_one(caps_.f, nf, kFaceBytes);
+  }
+  /// Elements added one by one up to these slot counts: arrays double.
+  void fill(double nv, double ne, double nf) {
+    grow(caps_.v, nv, kVertexBytes);
+    grow(caps_.h, 2 * ne, kHalfedgeBytes);
+    grow(caps_.e, ne, kEdgeBytes);
+    grow(caps_.f, nf, kFaceBytes);
+  }
+  /// Surface_mesh::collect_garbage: three index maps at capacity, then the
+  /// arrays shrunk to `n` (a copy each).
+  void collect_garbage(const Counts& n) {
+    const double maps = 4 * (caps_.v + caps_.h + caps_.f);
+    alloc(maps);
+    release(maps);
+    const Caps exact = Caps::exact(n);
+    shrink(caps_.v, exact.v, kVertexBytes);
+    shrink(caps_.h, exact.h, kHalfedgeBytes);
+    shrink(caps_.e, exact.e, kEdgeBytes);
+    shrink(caps_.f, exact.f, kFaceBytes);
+  }
+  /// Frees the mesh arrays (Surface_mesh::clear...).
+  void clear_mesh() {
+    release(caps_bytes(caps_));
+    caps_ = Caps{};
+  }
+  double peak() const { return peak_; }
+  const Caps& caps() const { return caps_; }
+
+ private:
+  void reserve_one(double& cap, double n, double bytes) {
+    if (n <= cap) return;
+    alloc(n * bytes);
+    release(cap * bytes);
+    cap = n;
+  }
+  void grow(double& cap, double n, double bytes) {
+    while (cap < n) reserve_one(cap, std::max(2 * cap, 1.0), bytes);
+  }
+  void shrink(double& cap, double n, double bytes) {
+    alloc(n * bytes);
+    release(cap * bytes);
+    cap = n;
+  }
+  double live_, peak_;
+  Caps caps_;
+};
+
+/// Simulates one step from counts `c` (mesh arrays at `caps`) to `n`, on top
+/// of `base` bytes; returns the peak and leaves the caps after the step.
+double simulate_step(const std::string& scheme, const Counts& c,
+                     const Counts& n, Caps& caps, double base,
+                     int global_step) {
+  const double V = c.vertices, E = c.edges, F = c.faces, B = c.border_edges;
+  Heap_model heap(base + caps_bytes(caps), caps);
+  const double backups = kDescriptorBytes * (V + E + F);  // p_vertices ...
+  double temps = backups;
+  heap.alloc(backups);
+  if (scheme == "catmull-clark") {
+    // PQQ_1step: reserve(V+E+F, 8E, 2E), a point buffer, a vertex map.
+    heap.reserve(V + E + F, 8 * E, 2 * E);
+    const double more = kPointBytes * (V + E + F) + kMapEntryBytes * V;
+    heap.alloc(more);
+    temps += more;
+    heap.fill(n.vertices, n.edges, n.faces);
+  } else if (scheme == "loop") {
+    // PTQ_1step: reserve(V+E, 4E, 2E) for 4F faces.
+    heap.reserve(V + E, 4 * E, 2 * E);
+    const double more = kPointBytes * (V + E) + kMapEntryBytes * V;
+    heap.alloc(more);
+    temps += more;
+    heap.fill(n.vertices, n.edges, n.faces);
+  } else if (scheme == "sqrt3") {
+    // Sqrt3_1step: P new points, reserve(V+P, 2(E+2F+P), 3F), a halfedge per
+    // face, a list of new positions (interior vertices + border faces).
+    const double P = n.vertices - V;
+    const double border_step = sqrt3_refines_border(global_step) ? B : 0;
+    heap.alloc(kPointBytes * P);
+    temps += kPointBytes * P;
+    heap.reserve(V + P, 2 * (E + 2 * F + P), 3 * F);
+    const double more =
+        kDescriptorBytes * F + kListNodeBytes * (V + border_step);
+    heap.alloc(more);
+    temps += more;
+    heap.fill(n.vertices, n.edges, n.faces);
+  } else if (scheme == "doo-sabin" && B > 0) {
+    // DQQ_border_1step: two halfedge tables, the new points and faces as
+    // flat arrays; the old mesh freed; the new one reserved exactly.
+    const double tables = 2 * 4 * caps.h;
+    const double arrays =
+        kPointBytes * n.vertices + 4 * n.faces +
+        4 * (c.degree_sum() + c.border_ears + 4 * (E - B) + 2 * E);
+    heap.alloc(tables + arrays);
+    heap.release(tables);
+    heap.clear_mesh();
+    heap.reserve(n.vertices, n.edges, n.faces);
+    temps += arrays;
+  } else if (scheme == "doo-sabin") {
+    // CGAL's DQQ_1step: 2E corner points, reserve(V+E+F, 2E, 8E); old and
+    // new elements coexist (V + 2E vertices, 6E edges, F + 3E faces in
+    // slots) until the old ones are removed; then collect_garbage.
+    heap.alloc(kPointBytes * 2 * E);
+    temps += kPointBytes * 2 * E;
+    heap.reserve(V + E + F, 2 * E, 8 * E);
+    heap.fill(V + 2 * E, 6 * E + 1, F + 3 * E);
+    heap.release(temps);
+    temps = 0;
+    heap.collect_garbage(n);
+  }
+  heap.release(temps);
+  caps = heap.caps();
+  return heap.peak();
+}
+
+double buffers_bytes(double vertices, double faces, double corners) {
+  return vertices * 3 * 8 + faces * 4 + corners * 4;
+}
+
+/// to_buffers on a mesh at `caps`: a vertex numbering, positions and face
+/// sizes reserved exactly, face indices reserved at H/2 + F then doubling.
+double to_buffers_peak(const Counts& n, const Caps& caps, double base) {
+  const double corners = n.degree_sum();
+  double indices = n.edges + n.faces;
+  while (indices < corners) indices *= 2;
+  return base + caps_bytes(caps) + 4 * caps.v +
+         buffers_bytes(n.vertices, n.faces, 0) + 4 * (indices + indices / 2);
+}
+
+// ---------------------------------------------------------------------------
+// Messages.
+
+std::string format_bytes(double bytes) {
+  char buf[64];
+  const double gb = 1024.0 * 1024.0 * 1024.0, mb = 1024.0 * 1024.0;
+  if (bytes >= gb)
+    std::snprintf(buf, sizeof buf, "%.1f GB", bytes / gb);
+  else if (bytes >= 100 * mb)
+    std::snprintf(buf, sizeof buf, "%.0f MB", bytes / mb);
+  else if (bytes >= mb)
+    std::snprintf(buf, sizeof buf, "%.1f MB", bytes / mb);
+  else
+    std::snprintf(buf, sizeof buf, "%.0f kB", std::ceil(bytes / 1024.0));
+  return buf;
+}
+
+std::string format_count(double n) {
+  char buf[64];
+  if (n >= 1e9)
+    std::snprintf(buf, sizeof buf, "%.3g G", n / 1e9);
+  else if (n >= 1e6)
+    std::snprintf(buf, sizeof buf, "%.3g M", n / 1e6);
+  else
+    std::snprintf(buf, sizeof buf, "%.0f", n);
+  return buf;
+}
+
+/// Surface_mesh numbers halfedges with 32-bit indices.
+constexpr double kMaxHalfedges = 4294967294.0;
+
+std::size_t to_size(double x) {
+  if (!(x < static_cast<double>(std::numeric_limits<std::size_t>::max())))
+    return std::numeric_limits<std::size_t>::max();
+  return static_cast<std::size_t>(x);
+}
+
+/// Memory one step needs, everything included.
+struct Step_need {
+  Counts after;
+  Caps caps_after;
+  double peak_bytes = 0;
+};
+
+/// The step from `c` (mesh arrays at `caps`) with the input buffers
+/// (`input_bytes`) alive; `last` adds to_buffers.
+Step_need step_need(const std::string& scheme, const Counts& c,
+                    const Caps& caps, int global_step, bool last,
+                    double input_bytes) {
+  Step_need need;
+  need.after = next_counts(scheme, c, global_step);
+  need.caps_after = caps;
+  double peak = simulate_step(scheme, c, need.after, need.caps_after,
+                              input_bytes, global_step);
+  if (last)
+    peak = std::max(peak, to_buffers_peak(need.after, need.caps_after,
+                                          input_bytes));
+  need.peak_bytes = peak * kSlackFactor + kSlackBytes;
+  return need;
+}
+
+Status too_large(const std::string& scheme, int level, const Step_need& need,
+                 double limit, const char* why) {
+  std::string m = "level " + std::to_string(level) + " of " + scheme +
+                  " would need about " + format_bytes(need.peak_bytes) +
+                  " (predicted " + format_count(need.after.vertices) +
+                  " vertices, " + format_count(need.after.faces) + " faces), ";
+  if (why != nullptr)
+    m += why;
+  else
+    m += "more than the " + format_bytes(limit) + " available";
+  return Status::error(Status_code::too_large, m);
+}
+
+/// Fails with too_large when the step would not fit.
+Status check_step(const std::string& scheme, const Step_need& need,
+                  int global_step, std::size_t limit) {
+  if (2 * need.after.edges > kMaxHalfedges)
+    return too_large(scheme, global_step + 1, need, 0,
+                     "more elements than a mesh can index (2^32)");
+  if (limit != 0 && need.peak_bytes > static_cast<double>(limit))
+    return too_large(scheme, global_step + 1, need,
+                     static_cast<double>(limit), nullptr);
+  return Status::success();
+}
+
+// ---------------------------------------------------------------------------
+// Steps.
+
+Status check_options(const Subdivide_options& options) {
+  if (find_scheme(options.scheme) == nullptr)
+    return Status::error(Status_code::invalid_argument,
+                         "unknown scheme \"" + options.scheme +
+                             "\"; known schemes: " + scheme_list());
+  if (options.levels < 0)
+    return Status::error(Status_code::invalid_argument,
+                         "levels must be 0 or more (got " +
+                             std::to_string(options.levels) + ") for " +
+                             options.scheme + "; known schemes: " +
+                             scheme_list());
+  if (options.start_level < 0)
+    return Status::error(Status_code::invalid_argument,
+                         "start_level must be 0 or more (got " +
+                             std::to_string(options.start_level) + ")");
+  return Status::success();
+}
+
+Status not_triangles(const std::string& scheme, const Counts& c) {
+  return Status::error(
+      Status_code::not_triangles,
+      scheme + " needs a triangle mesh: " + format_count(c.non_triangles) +
+          " of " + format_count(c.faces) +
+          " faces are not triangles; triangulate first (option triangulate)");
+}
+
+/// Frees the elements a host removed (CGAL's DQQ removes the old vertices;
+/// sqrt3's flips recycle what they remove). Not shrink_to_fit: it copies
+/// every array, a peak above most steps', and the next step's reserve
+/// reallocates anyway. collect_garbage shrinks the arrays itself.
+void collect_removed(Mesh& mesh) {
+  if (mesh.number_of_removed_vertices() + mesh.number_of_removed_halfedges() +
+          mesh.number_of_removed_faces() >
+      0)
+    mesh.collect_garbage();
+}
+
+/// Builds and checks the mesh the steps start from: valid, and triangles for
+/// the schemes that need them (triangulated here if asked to).
+Status prepare(const Mesh_buffers& in, const Subdivide_options& options,
+               Mesh& mesh, Counts& counts) {
+  Status s = check_options(options);
+  if (!s.ok()) return s;
+  s = build_mesh(in, mesh);
+  if (!s.ok()) return s;
+  // Exact capacities to start from (the memory model's assumption).
+  mesh.shrink_to_fit();
+  counts = counts_of(mesh);
+  if (find_scheme(options.scheme)->needs_triangles && counts.non_triangles > 0) {
+    if (!options.triangulate) return not_triangles(options.scheme, counts);
+    if (!CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
+      return Status::error(Status_code::invalid_mesh,
+                           "a face could not be triangulated (is it "
+                           "degenerate?); " +
+                               options.scheme + " needs triangles");
+    collect_removed(mesh);
+    mesh.shrink_to_fit();
+    counts = counts_of(mesh);
+  }
+  return Status::success();
+}
+
+Status sqrt3_step(Mesh& mesh, int global_step) {
+  if (!sqrt3_refines_border(global_step) || CGAL::is_closed(mesh)) {
+    SM3::Sqrt3_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
+    return Status::success();
+  }
+  // A border step. Its host assumes at most one border edge per face, which
+  // holds for the output of a non-border step but not for arbitrary input.
+  const Counts c = counts_of(mesh);
+  if (c.multi_border_faces > 0)
+    return Status::error(
+        Status_code::invalid_argument,
+        "start_level " + std::to_string(global_step) +
+            " of sqrt3 refines the border, which needs a mesh from an even "
+            "level of sqrt3, but " +
+            format_count(c.multi_border_faces) +
+            " faces have more than one border edge; start from level 0");
+  // The public Sqrt3_subdivision ties the border parity to its own loop
+  // counter, so a single border step needs the host CGAL's loop calls.
+  SM3::internal::Sqrt3_1step(mesh, get(CGAL::vertex_point, mesh),
+                             CGAL::Sqrt3_mask_3<Mesh>(&mesh, get(CGAL::vertex_point, mesh)),
+                             /*refine_border=*/true);
+  return Status::success();
+}
+
+}  // namespace
+
+/// Runs ONE step of `options.scheme` on `mesh`. `level_index` counts the
+/// steps of this call from 0; the step's level in the mesh's history is
+/// options.start_level + level_index (sqrt3's border parity). May throw
+/// (CGAL, bad_alloc): subdivide_mesh catches.
+Status run_step(Mesh& mesh, const Subdivide_options& options,
+                int level_index) {
+  const std::string& scheme = options.scheme;
+  const int global_step = options.start_level + level_index;
+  const auto one_step = CGAL::parameters::number_of_iterations(1);
+  Status s = Status::success();
+  if (scheme == "catmull-clark") {
+    SM3::CatmullClark_subdivision(mesh, one_step);
+  } else if (scheme == "loop") {
+    SM3::Loop_subdivision(mesh, one_step);
+  } else if (scheme == "doo-sabin") {
+    if (CGAL::is_closed(mesh))
+      SM3::DooSabin_subdivision(mesh, one_step);
+    else
+      DooSabin_border_subdivision(mesh, one_step);
+  } else if (scheme == "sqrt3") {
+    s = sqrt3_step(mesh, global_step);
+  } else {
+    return Status::error(Status_code::invalid_argument,
+                         "unknown scheme \"" + scheme +
+                             "\"; known schemes: " + scheme_list());
+  }
+  collect_removed(mesh);
+  return s;
+}
+
+Result<Size_prediction> predict_size(const Mesh_buffers& in,
+                                     const Subdivide_options& options) {
+  Result<Size_prediction> result;
+  try {
+    Counts c;
+    {
+      Mesh mesh;
+      Status s = check_options(options);
+      if (s.ok()) s = build_mesh(in, mesh);
+      if (!s.ok()) {
+        result.status = s;
+        return result;
+      }
+      c = counts_of(mesh);
+    }
+    if (find_scheme(options.scheme)->needs_triangles && c.non_triangles > 0) {
+      if (!options.triangulate) {
+        result.status = not_triangles(options.scheme, c);
+        return result;
+      }
+      c = triangulated(c);
+    }
+    const double input = buffers_bytes(
+        static_cast<double>(in.vertex_count()),
+        static_cast<double>(in.face_count()),
+        static_cast<double>(in.face_indices.size()));
+    Caps caps = Caps::exact(c);
+    double peak = to_buffers_peak(c, caps, input) * kSlackFactor + kSlackBytes;
+    for (int i = 0; i < options.levels; ++i) {
+      const Step_need need =
+          step_need(options.scheme, c, caps, options.start_level + i,
+                    i + 1 == options.levels, input);
+      peak = std::max(peak, need.peak_bytes);
+      c = need.after;
+      caps = need.caps_after;
+      if (!(c.faces < 1e300)) break;  // hopeless anyway; keep it finite
+    }
+    result.value.vertices = to_size(c.vertices);
+    result.value.edges = to_size(c.edges);
+    result.value.faces = to_size(c.faces);
+    result.value.peak_bytes = to_size(peak);
+  } catch (const std::exception& e) {
+    result.status = Status::error(Status_code::internal_error,
+                                  std::string("internal error: ") + e.what());
+  } catch (...) {
+    result.status = Status::error(Status_code::internal_error,
+                                  "internal error: unknown exception");
+  }
+  return result;
+}
+
+Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
+                                    const Subdivide_options& options) {
+  Result<Mesh_buffers> result;
+  int level = options.start_level;  // for messages
+  try {
+    Mesh mesh;
+    Counts counts;
+    Status s = prepare(in, options, mesh, counts);
+    const double input = buffers_bytes(
+        static_cast<double>(in.vertex_count()),
+        static_cast<double>(in.face_count()),
+        static_cast<double>(in.face_indices.size()));
+    // The model follows the real mesh: its counts are re-read after every
+    // step, the array capacities simulated (they are not observable).
+    Caps caps = Caps::exact(counts);
+    for (int i = 0; s.ok() && i < options.levels; ++i) {
+      level = options.start_level + i + 1;
+      const Step_need need =
+          step_need(options.scheme, counts, caps, options.start_level + i,
+                    i + 1 == options.levels, input);
+      s = check_step(options.scheme, need, options.start_level + i,
+                     options.memory_limit_bytes);
+      if (s.ok()) s = run_step(mesh, options, i);
+      if (s.ok()) {
+        counts = counts_of(mesh);
+        caps = need.caps_after;
+      }
+    }
+    if (!s.ok()) {
+      result.status = s;
+      return result;
+    }
+    result.value = to_buffers(mesh);
+  } catch (const CGAL::Failure_exception& e) {
+    result.status = Status::error(
+        Status_code::internal_error,
+        "CGAL failed at level " + std::to_string(level) + " of " +
+            options.scheme + ": " + e.what());
+  } catch (const std::bad_alloc& e) {
+    result.status = Status::error(
+        Status_code::internal_error,
+        "out of memory at level " + std::to_string(level) + " of " +
+            options.scheme + " (" + e.what() + ")");
+  } catch (const std::exception& e) {
+    result.status = Status::error(
+        Status_code::internal_error,
+        "internal error at level " + std::to_string(level) + " of " +
+            options.scheme + ": " + e.what());
+  } catch (...) {
+    result.status = Status::error(
+        Status_code::internal_error,
+        "internal error at level " + std::to_string(level) + " of " +
+            options.scheme + ": unknown exception");
+  }
+  return result;
+}
+
+std::vector<std::string> scheme_names() {
+  std::vector<std::string> names;
+  for (const Scheme_entry& s : scheme_table()) names.push_back(s.name);
+  return names;
+}
+
+}  // namespace subdivlab
