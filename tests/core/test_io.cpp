@@ -215,6 +215,27 @@ TEST(IoOffErrors, IndexOutOfRange) {
       "line 7: face index -1 is out of range (4 vertices)");
 }
 
+TEST(IoOffErrors, HugeIndicesQuoteTheFile) {
+  const std::string text = "OFF\n4 4 0\n" + tetra_vertices +
+                           "3 0 2 123456789012345678901234567890\n" +
+                           tetra_faces;
+  EXPECT_EQ(read_error(text, Mesh_format::off, Status_code::invalid_mesh, 7),
+            "line 7: face index 123456789012345678901234567890 is out of "
+            "range (4 vertices)");
+  EXPECT_EQ(read_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999/1\n",
+                       Mesh_format::obj, Status_code::invalid_mesh, 4),
+            "line 4: face index 99999999999 is out of range (more than any "
+            "mesh can hold)");
+  EXPECT_EQ(read_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 "
+                       "-99999999999999999999999//2\n",
+                       Mesh_format::obj, Status_code::invalid_mesh, 4),
+            "line 4: relative face index -99999999999999999999999 is out of "
+            "range (3 vertices defined so far)");
+  EXPECT_EQ(read_error("OFF\n4 123456789012345678901234567890 0\n",
+                       Mesh_format::off, Status_code::parse_error, 2),
+            "line 2: face count 123456789012345678901234567890 is too large");
+}
+
 TEST(IoOffErrors, IndexNotAnInteger) {
   const std::string text =
       "OFF\n4 4 0\n" + tetra_vertices + "3 0 2 1.5\n" + tetra_faces;

@@ -123,17 +123,19 @@ Number parse_double(std::string_view tok, double& out) {
   return Number::ok;
 }
 
-/// Strict decimal integer with optional sign; false if not an integer or
-/// beyond +-9e18.
+/// Strict decimal integer with optional sign; false if not an integer.
+/// Magnitudes beyond 10^18 saturate there: every caller treats such a value
+/// as out of range and quotes the token itself.
 bool parse_int(std::string_view tok, long long& out) {
+  constexpr long long cap = 1000000000000000000ll;
   std::size_t i = 0;
   bool neg = false;
   if (i < tok.size() && (tok[i] == '+' || tok[i] == '-')) neg = tok[i++] == '-';
-  if (i == tok.size() || tok.size() - i > 18) return false;
+  if (i == tok.size()) return false;
   long long v = 0;
   for (; i < tok.size(); ++i) {
     if (tok[i] < '0' || tok[i] > '9') return false;
-    v = v * 10 + (tok[i] - '0');
+    v = v >= cap / 10 ? cap : v * 10 + (tok[i] - '0');
   }
   out = neg ? -v : v;
   return true;
@@ -251,11 +253,11 @@ Result<Mesh_buffers> read_off(std::string_view text) {
     }
   }
   if (nv_ll > 0xfffffffell)
-    return parse_fail(
-        line, "vertex count " + std::to_string(nv_ll) + " is too large");
-  if (nf_ll > 0xfffffffell)
     return parse_fail(line,
-                      "face count " + std::to_string(nf_ll) + " is too large");
+                      "vertex count " + std::string(tok[c0]) + " is too large");
+  if (nf_ll > 0xfffffffell)
+    return parse_fail(
+        line, "face count " + std::string(tok[c0 + 1]) + " is too large");
   const std::size_t nv = static_cast<std::size_t>(nv_ll),
                     nf = static_cast<std::size_t>(nf_ll);
 
@@ -326,15 +328,16 @@ Result<Mesh_buffers> read_off(std::string_view text) {
     }
     const std::size_t listed = tok.size() - 1;
     if (static_cast<unsigned long long>(k) > listed) {
-      return parse_fail(
-          line, "face " + std::to_string(f) + " declares " + std::to_string(k) +
-                    " vertices but lists only " + std::to_string(listed));
+      return parse_fail(line, "face " + std::to_string(f) + " declares " +
+                                  std::string(tok[0]) +
+                                  " vertices but lists only " +
+                                  std::to_string(listed));
     }
     const std::size_t extra = listed - static_cast<std::size_t>(k);
     if (extra > 4) {
       return parse_fail(
           line,
-          "face " + std::to_string(f) + " declares " + std::to_string(k) +
+          "face " + std::to_string(f) + " declares " + std::string(tok[0]) +
               " vertices but the line has " + std::to_string(extra) +
               " more values (at most 4, a colour, may follow the indices)");
     }
@@ -348,7 +351,7 @@ Result<Mesh_buffers> read_off(std::string_view text) {
         Result<Mesh_buffers> r;
         r.status = Status::error(
             Status_code::invalid_mesh,
-            at(line) + "face index " + std::to_string(index) +
+            at(line) + "face index " + std::string(tok[i]) +
                 " is out of range (" + std::to_string(nv) + " vertices)",
             line);
         return r;
@@ -467,7 +470,8 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
             Result<Mesh_buffers> r;
             r.status = Status::error(
                 Status_code::invalid_mesh,
-                at(line) + "relative face index " + std::to_string(v) +
+                at(line) + "relative face index " +
+                    std::string(tok[i].substr(0, tok[i].find('/'))) +
                     " is out of range (" + std::to_string(defined) +
                     " vertices defined so far)",
                 line);
@@ -477,7 +481,16 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
           // Positive indices may refer to vertices defined further down;
           // check_buffers checks them against the final count.
           index = v - 1;
-          if (index >= 0xffffffffll) index = 0xfffffffell;
+          if (index >= 0xffffffffll) {
+            Result<Mesh_buffers> r;
+            r.status = Status::error(
+                Status_code::invalid_mesh,
+                at(line) + "face index " +
+                    std::string(tok[i].substr(0, tok[i].find('/'))) +
+                    " is out of range (more than any mesh can hold)",
+                line);
+            return r;
+          }
         }
         mesh.face_indices.push_back(static_cast<std::uint32_t>(index));
       }
