@@ -22,6 +22,11 @@ test('render modes, the control-mesh overlay and the bounding box change the pic
       shots.set(mode, await app.canvasPixels());
     });
   }
+  await test.step('polygon edges: quads drawn as quads (no fan diagonals)', async () => {
+    const state = await app.state();
+    expect(state.facts?.faces).toBe(96);
+    expect(state.edgeSegments).toBe(192);
+  });
   const modes = [...shots.keys()];
   for (let i = 0; i < modes.length; i++) {
     for (let j = i + 1; j < modes.length; j++) {

@@ -192,6 +192,7 @@ export class AppShell {
           fov: this.viewer.view.camera.fov,
           aspect: this.viewer.view.camera.aspect,
           gpuGeometries: this.viewer.view.gpuMemory().geometries,
+          edgeSegments: this.viewer.view.edgeSegments(),
         };
       },
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),

@@ -33,6 +33,8 @@ export interface SubdivLabTestState {
   aspect: number;
   /** Geometries alive on the GPU: levels that were dropped must not stay. */
   gpuGeometries: number;
+  /** Segments of the polygon-edge lines of the shown level. */
+  edgeSegments: number;
 }
 
 export interface SubdivLabTestApi {

@@ -270,6 +270,11 @@ export class SceneView {
     this.dirty = true;
   }
 
+  /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */
+  edgeSegments(): number {
+    return (this.edgeLines.geometry.index?.count ?? 0) / 2;
+  }
+
   /** Geometries and textures alive on the GPU (three's renderer.info), for leak checks. */
   gpuMemory(): { geometries: number; textures: number } {
     const { geometries, textures } = this.renderer.info.memory;
