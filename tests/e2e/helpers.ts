@@ -196,3 +196,55 @@ export function quadGridOff(n: number): string {
   }
   return `OFF\n${v.length} ${f.length} 0\n${v.join('\n')}\n${f.join('\n')}\n`;
 }
+
+export interface Camera {
+  position: readonly number[];
+  target: readonly number[];
+  up: readonly number[];
+  /** Vertical field of view, degrees. */
+  fov: number;
+  width: number;
+  height: number;
+}
+
+const sub3 = (a: readonly number[], b: readonly number[]) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const dot3 = (a: readonly number[], b: readonly number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const cross3 = (a: readonly number[], b: readonly number[]) => [
+  a[1] * b[2] - a[2] * b[1],
+  a[2] * b[0] - a[0] * b[2],
+  a[0] * b[1] - a[1] * b[0],
+];
+const unit3 = (a: readonly number[]) => {
+  const l = Math.hypot(a[0], a[1], a[2]);
+  return [a[0] / l, a[1] / l, a[2] / l];
+};
+
+/**
+ * For each camera-facing face: its centroid projected to screen pixels (a
+ * pinhole camera looking from `position` at `target`) and its depth along the
+ * viewing direction.
+ */
+export function projectedFacingFaces(mesh: OffMesh, camera: Camera): { x: number; y: number; depth: number }[] {
+  const forward = unit3(sub3(camera.target, camera.position));
+  const right = unit3(cross3(forward, camera.up));
+  const up = cross3(right, forward);
+  const t = Math.tan((camera.fov * Math.PI) / 360);
+  const aspect = camera.width / camera.height;
+  const out: { x: number; y: number; depth: number }[] = [];
+  for (const f of mesh.faces) {
+    const single: OffMesh = { positions: mesh.positions, faces: [f] };
+    if (cameraFacingFaces(single, camera.position) !== 1) continue;
+    const c = [0, 1, 2].map((d) => f.reduce((s, i) => s + mesh.positions[i][d], 0) / f.length);
+    // The screen centroid is the mean of the projected corners (as the SVG polygon's points).
+    let x = 0;
+    let y = 0;
+    for (const i of f) {
+      const v = sub3(mesh.positions[i], camera.position);
+      const z = dot3(v, forward);
+      x += ((dot3(v, right) / (z * t * aspect) + 1) / 2) * camera.width;
+      y += ((1 - dot3(v, up) / (z * t)) / 2) * camera.height;
+    }
+    out.push({ x: x / f.length, y: y / f.length, depth: dot3(sub3(c, camera.position), forward) });
+  }
+  return out;
+}

@@ -5,7 +5,7 @@
 import { readFileSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
 import { expect, test } from './fixtures';
-import { cameraFacingFaces, edgeCount, PNG_SIGNATURE, readOff, readPng } from './helpers';
+import { cameraFacingFaces, edgeCount, PNG_SIGNATURE, projectedFacingFaces, readOff, readPng } from './helpers';
 
 const CUBE = readFileSync('public/meshes/cube.off', 'utf8');
 
@@ -101,6 +101,11 @@ test('SVG export: one polygon per camera-facing face, back to front, viewBox set
         viewBox: root.getAttribute('viewBox'),
         polygons: doc.querySelectorAll('polygon').length,
         control: doc.querySelector('#control-mesh')?.getAttribute('d')?.split('M').length ?? 0,
+        // Screen centroid of each polygon, in drawing order.
+        centroids: [...doc.querySelectorAll('polygon')].map((p) => {
+          const xy = (p.getAttribute('points') ?? '').split(' ').map((pair) => pair.split(',').map(Number));
+          return [xy.reduce((s, q) => s + q[0], 0) / xy.length, xy.reduce((s, q) => s + q[1], 0) / xy.length];
+        }),
       };
     }, text);
     return { name: download.suggestedFilename(), ...parsed };
@@ -144,6 +149,20 @@ test('SVG export: one polygon per camera-facing face, back to front, viewBox set
     expect(expected).toBeLessThan(96);
     // One move-to per control edge (the leading empty split part counts as the 13th).
     expect(svg.control).toBe(12 + 1);
+
+    // Back to front: match each polygon to its face by screen centroid, then depths must not increase.
+    const state = await app.state();
+    const size = await app.byTestId('viewer').evaluate((e) => [e.clientWidth, e.clientHeight]);
+    const faces = projectedFacingFaces(off, { ...state.view, fov: state.fov, width: size[0], height: size[1] });
+    expect(faces.length).toBe(expected);
+    const depths = svg.centroids.map(([x, y]) => {
+      const nearest = faces.reduce((best, f) =>
+        Math.hypot(f.x - x, f.y - y) < Math.hypot(best.x - x, best.y - y) ? f : best,
+      );
+      expect(Math.hypot(nearest.x - x, nearest.y - y)).toBeLessThan(0.05);
+      return nearest.depth;
+    });
+    for (let i = 1; i < depths.length; i++) expect(depths[i]).toBeLessThanOrEqual(depths[i - 1]);
   });
 });
 
