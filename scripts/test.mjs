@@ -6,6 +6,7 @@
 //   4. e2e         Playwright (tests/e2e), when playwright.config.ts exists
 // Each step's output is shown; the first failing step stops the run with a
 // non-zero exit. The last line sums the tests: "N passed, M failed".
+// Usage: node scripts/test.mjs [--skip lint,native,unit,e2e] (for local runs)
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -17,6 +18,8 @@ const resultsDir = join(root, 'build', 'test-results');
 mkdirSync(resultsDir, { recursive: true });
 
 const totals = { passed: 0, failed: 0 };
+const skipAt = process.argv.indexOf('--skip');
+const skipped = new Set(skipAt >= 0 ? (process.argv[skipAt + 1] ?? '').split(',') : []);
 
 function run(cmd, args, options = {}) {
   const result = spawnSync(cmd, args, { stdio: 'inherit', cwd: root, ...options });
@@ -109,6 +112,7 @@ const steps = [
   ['e2e', e2eTests],
 ];
 for (const [name, step] of steps) {
-  if (!step()) finish(name);
+  if (skipped.has(name)) heading(`${name}: skipped (--skip)`);
+  else if (!step()) finish(name);
 }
 finish(null);
