@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
   const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
   std::vector<std::string> schemes;
   for (int i = 3; i < argc; ++i) schemes.push_back(argv[i]);
-  if (schemes.empty()) schemes = {"catmull-clark", "loop", "doo-sabin", "sqrt3"};
+  if (schemes.empty())
+    schemes = {"catmull-clark", "loop", "doo-sabin", "sqrt3"};
 
   std::ifstream file(path, std::ios::binary);
   if (!file) {
@@ -46,7 +47,9 @@ int main(int argc, char** argv) {
   text << file.rdbuf();
   const std::string name = path.substr(path.find_last_of('/') + 1);
   const Mesh_format format =
-      name.size() > 4 && name.substr(name.size() - 4) == ".obj" ? Mesh_format::obj : Mesh_format::off;
+      name.size() > 4 && name.substr(name.size() - 4) == ".obj"
+          ? Mesh_format::obj
+          : Mesh_format::off;
   const Result<Mesh_buffers> mesh = read_mesh(text.str(), format);
   if (!mesh.ok()) {
     std::cerr << "error: " << path << ": " << mesh.status.message << "\n";
@@ -69,11 +72,15 @@ int main(int argc, char** argv) {
         return 1;
       }
       faces = out.value.face_count();
-      if (r > 0) times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+      if (r > 0)
+        times.push_back(
+            std::chrono::duration<double, std::milli>(stop - start).count());
     }
-    std::printf("{\"scheme\":\"%s\",\"faces\":%zu,\"median_ms\":%.3f,\"runs_ms\":[", scheme.c_str(), faces,
-                median(times));
-    for (std::size_t i = 0; i < times.size(); ++i) std::printf("%s%.3f", i ? "," : "", times[i]);
+    std::printf(
+        "{\"scheme\":\"%s\",\"faces\":%zu,\"median_ms\":%.3f,\"runs_ms\":[",
+        scheme.c_str(), faces, median(times));
+    for (std::size_t i = 0; i < times.size(); ++i)
+      std::printf("%s%.3f", i ? "," : "", times[i]);
     std::printf("]}\n");
     std::fflush(stdout);
   }
