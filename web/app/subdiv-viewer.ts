@@ -15,6 +15,12 @@ import { exportSvg } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
 
+/**
+ * Options of a step other than the scheme, the level and triangulation:
+ * e.g. issue 4's `rules` (custom scheme) and `smoothBoundary`.
+ */
+export type SchemeOptions = Omit<SubdivideOptions, 'scheme' | 'levels' | 'startLevel' | 'triangulate'>;
+
 /** What a large-step confirmation is told. */
 export interface LargeStepInfo {
   level: number;
@@ -76,6 +82,7 @@ export class SubdivViewer {
   private name: string | null = null;
   private scheme: SchemeName;
   private triangulate = false;
+  private schemeOptions: SchemeOptions = {};
   private busyState: BusyState | null = null;
   private readonly listeners = new Set<(state: ViewerState) => void>();
   private memoryBudget: number;
@@ -147,6 +154,7 @@ export class SubdivViewer {
     const generation = this.generation;
     const from = this.levels.length - 1;
     const options: SubdivideOptions = {
+      ...this.schemeOptions,
       scheme: this.scheme,
       levels: 1,
       startLevel: from,
@@ -204,6 +212,16 @@ export class SubdivViewer {
     if (triangulate === this.triangulate) return;
     this.cancel();
     this.triangulate = triangulate;
+    this.truncate();
+  }
+
+  /**
+   * Further options for every step (a rules panel sets `rules` here). Levels
+   * computed with other options are dropped, as for a scheme change.
+   */
+  setSchemeOptions(options: SchemeOptions): void {
+    this.cancel();
+    this.schemeOptions = { ...options };
     this.truncate();
   }
 
