@@ -8,7 +8,7 @@
 //   5. the native core and its tests (with --native)
 // Usage: node scripts/setup.mjs [--wasm-only] [--native]
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, statSync } from 'node:fs';
+import { existsSync, lstatSync, mkdirSync, statSync, symlinkSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -117,6 +117,14 @@ function buildNative() {
 function buildCli() {
   log('bundling the subdiv CLI');
   run(join(root, 'node_modules', '.bin', 'vite'), ['build', '--config', 'vite.cli.config.ts', '--logLevel', 'warn']);
+  // npm exec runs a root package's own bin only in recent npm versions; a link
+  // in node_modules/.bin makes `npx subdiv` work with any npm.
+  const link = join(root, 'node_modules', '.bin', 'subdiv');
+  try {
+    lstatSync(link);
+  } catch {
+    symlinkSync(join('..', '..', 'bin', 'subdiv.mjs'), link);
+  }
 }
 
 try {
