@@ -2,6 +2,9 @@
 
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
+#include <set>
+
 #include "custom_rules.h"
 
 namespace subdivlab {
@@ -22,12 +25,27 @@ bool scheme_keeps_control_edges(const Subdivide_options& o) {
 Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& mesh,
                                             int start_level) {
   Result<Control_edges> r;
+  // build_mesh numbers the vertices that faces use, in their buffer order.
+  const std::size_t nv = in.vertex_count();
+  std::vector<std::uint32_t> rank(nv, 0xffffffffu);
+  for (std::uint32_t v : in.face_indices)
+    if (v < nv) rank[v] = 0;
+  std::uint32_t next = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (rank[v] == 0) rank[v] = next++;
   if (in.control_edges.empty()) {
     if (start_level != 0) return r;
-    r.value.reserve(mesh.number_of_edges());
-    for (Mesh::Edge_index e : mesh.edges()) {
-      const Mesh::Halfedge_index h = mesh.halfedge(e);
-      r.value.emplace_back(mesh.source(h).idx(), mesh.target(h).idx());
+    // The edges of the faces as given, so that a mesh triangulated before
+    // the first step keeps its polygon edges only.
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    std::size_t o = 0;
+    for (std::uint32_t k : in.face_sizes) {
+      for (std::uint32_t i = 0; i < k; ++i) {
+        const std::uint32_t a = rank[in.face_indices[o + i]];
+        const std::uint32_t b = rank[in.face_indices[o + (i + 1) % k]];
+        if (seen.insert({std::min(a, b), std::max(a, b)}).second) r.value.emplace_back(a, b);
+      }
+      o += k;
     }
     return r;
   }
@@ -39,14 +57,6 @@ Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& 
   if (in.control_edges.size() % 2 != 0)
     return fail("control edges must come in pairs of vertex indices (got " +
                 std::to_string(in.control_edges.size()) + " numbers)");
-  // build_mesh numbers the vertices that faces use, in their buffer order.
-  const std::size_t nv = in.vertex_count();
-  std::vector<std::uint32_t> rank(nv, 0xffffffffu);
-  for (std::uint32_t v : in.face_indices)
-    if (v < nv) rank[v] = 0;
-  std::uint32_t next = 0;
-  for (std::size_t v = 0; v < nv; ++v)
-    if (rank[v] == 0) rank[v] = next++;
   r.value.reserve(in.control_edges.size() / 2);
   for (std::size_t i = 0; i < in.control_edges.size(); i += 2) {
     const std::uint32_t a = in.control_edges[i], b = in.control_edges[i + 1];

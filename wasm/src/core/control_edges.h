@@ -25,8 +25,10 @@ bool scheme_keeps_control_edges(const Subdivide_options& options);
 
 /// Control edges of `mesh` (built by build_mesh from `in`) at the start of a
 /// subdivision: `in.control_edges` mapped to mesh vertex indices (build_mesh
-/// drops isolated vertices), or every edge of the mesh when
-/// `in.control_edges` is empty and `start_level` is 0, or none.
+/// drops isolated vertices), or every edge of the faces of `in` when
+/// `in.control_edges` is empty and `start_level` is 0 (edges a later
+/// triangulation adds are not control edges), or none. Precondition:
+/// build_mesh(in, ...) succeeded (`mesh` may since have been triangulated).
 /// Fails with invalid_argument when the pairs are odd in number, out of
 /// range, or not edges of the mesh.
 Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& mesh,

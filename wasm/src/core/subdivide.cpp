@@ -7,6 +7,10 @@
 // refines the border on every second step; the step parity is carried
 // through Subdivide_options::start_level).
 
+#include "control_edges.h"
+#include "custom_rules.h"
+#include "linear_masks_3.h"
+#include "quad_triangle_3.h"
 #include "subdivide.h"
 
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -45,6 +49,11 @@ const std::vector<Scheme_entry>& scheme_table() {
       {"loop", true},
       {"doo-sabin", false},
       {"sqrt3", true},
+      // Issue 4. custom's needs depend on its host (needs_triangles below).
+      {"quad-triangle", false},
+      {"linear", false},
+      {"linear-tri", true},
+      {"custom", false},
   };
   return table;
 }
@@ -53,6 +62,25 @@ const Scheme_entry* find_scheme(const std::string& name) {
   for (const Scheme_entry& s : scheme_table())
     if (name == s.name) return &s;
   return nullptr;
+}
+
+/// Whether the scheme of `o` needs a triangle mesh.
+bool needs_triangles(const Subdivide_options& o) {
+  if (o.scheme == "custom") return custom_rules_need_triangles(o.custom);
+  const Scheme_entry* e = find_scheme(o.scheme);
+  return e != nullptr && e->needs_triangles;
+}
+
+/// The scheme whose counts and memory model a step of `o` follows: linear
+/// refines as catmull-clark, linear-tri as loop, custom as its host's scheme.
+std::string size_model(const Subdivide_options& o) {
+  if (o.scheme == "linear") return "catmull-clark";
+  if (o.scheme == "linear-tri") return "loop";
+  if (o.scheme == "custom") {
+    const std::string& h = o.custom.host;
+    return h == "pqq" ? "catmull-clark" : h == "ptq" ? "loop" : h == "dqq" ? "doo-sabin" : "sqrt3";
+  }
+  return o.scheme;
 }
 
 std::string scheme_list() {
@@ -153,6 +181,18 @@ Counts next_counts(const std::string& scheme, const Counts& c,
     n.border_ears = 2 * c.border_ears;
     n.border_fans = 2 * c.border_fans;
     n.non_triangles = n.faces;  // not exact, unused by doo-sabin
+  } else if (scheme == "quad-triangle") {
+    // quad_triangle_3.h: edge points, a face point per non-triangle; a
+    // triangle gives 4 triangles, a k-gon k quads.
+    const double T = F - c.non_triangles, S = c.degree_sum() - 3 * T;
+    n.vertices = V + E + c.non_triangles;
+    n.edges = 2 * E + 3 * T + S;
+    n.faces = 4 * T + S;
+    n.border_edges = 2 * B;
+    n.border_ears = c.border_ears;
+    n.border_fans = c.border_fans;
+    n.non_triangles = S;
+    n.degree_excess = S;
   } else if (scheme == "sqrt3") {
     // A face point per face, old edges flipped: F' = 3F. On a border step
     // each border edge also gets two points and its face splits into 3.
@@ -313,6 +353,16 @@ double simulate_step(const std::string& scheme, const Counts& c,
     heap.alloc(more);
     temps += more;
     heap.fill(n.vertices, n.edges, n.faces);
+  } else if (scheme == "quad-triangle") {
+    // PQT_1step (quad_triangle_3.h): edge and face points, an exact reserve,
+    // then a point and a descriptor per refined vertex for the averaging.
+    const double points = kPointBytes * (E + F);
+    heap.alloc(points);
+    temps += points;
+    heap.reserve(n.vertices, n.edges, n.faces);
+    const double averaging = (kPointBytes + kDescriptorBytes) * n.vertices;
+    heap.alloc(averaging);
+    temps += averaging;
   } else if (scheme == "doo-sabin" && B > 0) {
     // DQQ_border_1step: two halfedge tables, the new points and faces as
     // flat arrays; the old mesh freed; the new one reserved exactly.
@@ -460,6 +510,7 @@ Status check_options(const Subdivide_options& options) {
     return Status::error(Status_code::invalid_argument,
                          "start_level must be 0 or more (got " +
                              std::to_string(options.start_level) + ")");
+  if (options.scheme == "custom") return check_custom_rules(options.custom);
   return Status::success();
 }
 
@@ -493,7 +544,7 @@ Status prepare(const Mesh_buffers& in, const Subdivide_options& options,
   // Exact capacities to start from (the memory model's assumption).
   mesh.shrink_to_fit();
   counts = counts_of(mesh);
-  if (find_scheme(options.scheme)->needs_triangles && counts.non_triangles > 0) {
+  if (needs_triangles(options) && counts.non_triangles > 0) {
     if (!options.triangulate) return not_triangles(options.scheme, counts);
     if (!CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
       return Status::error(Status_code::invalid_mesh,
@@ -554,6 +605,23 @@ Status run_step(Mesh& mesh, const Subdivide_options& options,
       DooSabin_border_subdivision(mesh, one_step);
   } else if (scheme == "sqrt3") {
     s = sqrt3_step(mesh, global_step);
+  } else if (scheme == "quad-triangle") {
+    QuadTriangle_subdivision(mesh, 1, options.smooth_boundary);
+  } else if (scheme == "linear") {
+    Linear_subdivision(mesh);
+  } else if (scheme == "linear-tri") {
+    Linear_triangle_subdivision(mesh);
+  } else if (scheme == "custom") {
+    // Valences and face degrees grow with the steps: check every step.
+    s = check_custom_rules_cover(options.custom, mesh);
+    if (s.ok() && options.custom.host == "sqrt3" && sqrt3_refines_border(global_step) &&
+        !CGAL::is_closed(mesh) && counts_of(mesh).multi_border_faces > 0)
+      s = Status::error(Status_code::invalid_argument,
+                        "start_level " + std::to_string(global_step) +
+                            " of custom (sqrt3 host) refines the border, which needs a mesh "
+                            "from an even level, but some faces have more than one border "
+                            "edge; start from level 0");
+    if (s.ok()) custom_subdivision_step(mesh, options.custom, global_step);
   } else {
     return Status::error(Status_code::invalid_argument,
                          "unknown scheme \"" + scheme +
@@ -578,7 +646,7 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
       }
       c = counts_of(mesh);
     }
-    if (find_scheme(options.scheme)->needs_triangles && c.non_triangles > 0) {
+    if (needs_triangles(options) && c.non_triangles > 0) {
       if (!options.triangulate) {
         result.status = not_triangles(options.scheme, c);
         return result;
@@ -593,7 +661,7 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
     double peak = to_buffers_peak(c, caps, input) * kSlackFactor + kSlackBytes;
     for (int i = 0; i < options.levels; ++i) {
       const Step_need need =
-          step_need(options.scheme, c, caps, options.start_level + i,
+          step_need(size_model(options), c, caps, options.start_level + i,
                     i + 1 == options.levels, input);
       peak = std::max(peak, need.peak_bytes);
       c = need.after;
@@ -622,6 +690,14 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
     Mesh mesh;
     Counts counts;
     Status s = prepare(in, options, mesh, counts);
+    // Control edges (primal schemes): old vertices keep their indices.
+    const bool track = s.ok() && scheme_keeps_control_edges(options);
+    Control_edges control;
+    if (track) {
+      Result<Control_edges> ce = initial_control_edges(in, mesh, options.start_level);
+      s = ce.status;
+      control = std::move(ce.value);
+    }
     const double input = buffers_bytes(
         static_cast<double>(in.vertex_count()),
         static_cast<double>(in.face_count()),
@@ -632,11 +708,13 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
     for (int i = 0; s.ok() && i < options.levels; ++i) {
       level = options.start_level + i + 1;
       const Step_need need =
-          step_need(options.scheme, counts, caps, options.start_level + i,
+          step_need(size_model(options), counts, caps, options.start_level + i,
                     i + 1 == options.levels, input);
       s = check_step(options.scheme, need, options.start_level + i,
                      options.memory_limit_bytes);
+      const auto old_end = static_cast<std::uint32_t>(mesh.number_of_vertices());
       if (s.ok()) s = run_step(mesh, options, i);
+      if (s.ok() && track) control = refine_control_edges(mesh, old_end, control);
       if (s.ok()) {
         counts = counts_of(mesh);
         caps = need.caps_after;
@@ -647,6 +725,7 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       return result;
     }
     result.value = to_buffers(mesh);
+    if (track) result.value.control_edges = control_edges_to_buffers(mesh, control);
   } catch (const CGAL::Failure_exception& e) {
     result.status = Status::error(
         Status_code::internal_error,
