@@ -13,7 +13,7 @@ import { SubdivError, type SubdivErrorCode } from './subdiv-error';
 export interface InitSource {
   /** The module's bytes (Node: read from disk; see init-node.ts). */
   wasmBinary?: ArrayBuffer | Uint8Array;
-  /** URL of subdivlab.wasm, when it is served from somewhere else. */
+  /** URL of subdivlab.wasm, when it is served from somewhere else (browser or Node). */
   wasmUrl?: string;
 }
 
@@ -58,8 +58,12 @@ async function load(source: InitSource): Promise<void> {
   if (source.wasmBinary) {
     moduleArgs.wasmBinary = source.wasmBinary;
   } else if (source.wasmUrl) {
-    const url = source.wasmUrl;
-    moduleArgs.locateFile = (path: string) => (path.endsWith('.wasm') ? url : path);
+    // Fetched here rather than by the glue, whose loader only works in browsers.
+    const response = await fetch(source.wasmUrl);
+    if (!response.ok) {
+      throw new SubdivError('internal_error', `Cannot load ${source.wasmUrl}: HTTP ${response.status}.`);
+    }
+    moduleArgs.wasmBinary = await response.arrayBuffer();
   }
   // Otherwise the glue resolves `new URL('subdivlab.wasm', import.meta.url)`,
   // which Vite rewrites to the emitted asset in dev, builds and workers alike.
