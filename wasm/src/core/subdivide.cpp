@@ -238,8 +238,12 @@ constexpr double kVertexBytes = 28.125, kHalfedgeBytes = 16,
                  kEdgeBytes = 0.125, kFaceBytes = 4.125;
 constexpr double kMapEntryBytes = 40, kListNodeBytes = 64;
 constexpr double kPointBytes = 24, kDescriptorBytes = 4;
-/// Allocator slack and small fixed allocations.
-constexpr double kSlackFactor = 1.03, kSlackBytes = 64 * 1024;
+/// Allocator slack and small fixed allocations. Under WebAssembly,
+/// dlmalloc's high-water mark (mallinfo().arena) exceeded the native live
+/// bytes by up to 9.5% (sqrt3, whose std::list nodes sit between the mesh
+/// arrays; 0-4% for the other hosts), measured on 10k-1M-face meshes at
+/// 1-5 levels; natively the model is then 1.15-1.3x the measured peak.
+constexpr double kSlackFactor = 1.15, kSlackBytes = 64 * 1024;
 
 /// Element capacities of the mesh arrays (halfedges counted separately).
 struct Caps {
@@ -391,6 +395,11 @@ double simulate_step(const std::string& scheme, const Counts& c,
   caps = heap.caps();
   return heap.peak();
 }
+
+/// Control edges (control_edges.h) alive around a step with `marks` marked
+/// edges: the marks (8 bytes a pair), their children (twice as many) and,
+/// after the last step, the output pairs.
+double control_edge_bytes(double marks) { return 8 * 3 * marks; }
 
 double buffers_bytes(double vertices, double faces, double corners) {
   return vertices * 3 * 8 + faces * 4 + corners * 4;
@@ -646,6 +655,12 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
       }
       c = counts_of(mesh);
     }
+    // Marks the primal schemes carry (before any triangulation).
+    double marks = 0;
+    if (scheme_keeps_control_edges(options))
+      marks = !in.control_edges.empty() ? static_cast<double>(in.control_edges.size() / 2)
+              : options.start_level == 0 ? c.edges
+                                         : 0;
     if (needs_triangles(options) && c.non_triangles > 0) {
       if (!options.triangulate) {
         result.status = not_triangles(options.scheme, c);
@@ -662,7 +677,8 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
     for (int i = 0; i < options.levels; ++i) {
       const Step_need need =
           step_need(size_model(options), c, caps, options.start_level + i,
-                    i + 1 == options.levels, input);
+                    i + 1 == options.levels, input + control_edge_bytes(marks));
+      marks *= 2;
       peak = std::max(peak, need.peak_bytes);
       c = need.after;
       caps = need.caps_after;
@@ -709,7 +725,8 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       level = options.start_level + i + 1;
       const Step_need need =
           step_need(size_model(options), counts, caps, options.start_level + i,
-                    i + 1 == options.levels, input);
+                    i + 1 == options.levels,
+                    input + control_edge_bytes(static_cast<double>(control.size())));
       s = check_step(options.scheme, need, options.start_level + i,
                      options.memory_limit_bytes);
       const auto old_end = static_cast<std::uint32_t>(mesh.number_of_vertices());
