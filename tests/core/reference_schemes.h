@@ -234,7 +234,8 @@ inline std::vector<std::vector<std::uint32_t>> border_loops(
       ++directed[{f[i], f[(i + 1) % f.size()]}];
   std::map<std::uint32_t, std::uint32_t> next;  // border edge a -> b
   for (const auto& [edge, count] : directed)
-    if (!directed.count({edge.second, edge.first})) next[edge.first] = edge.second;
+    if (!directed.count({edge.second, edge.first}))
+      next[edge.first] = edge.second;
   std::vector<std::vector<std::uint32_t>> loops;
   while (!next.empty()) {
     std::vector<std::uint32_t> loop;

@@ -3,11 +3,10 @@
 // (reference_schemes.h) and hand-computed values, the Doo-Sabin border, the
 // sqrt3 parity, errors, and the memory model against measured allocations.
 
-#include <gtest/gtest.h>
-#include <malloc.h>
-
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/subdivision_method_3.h>
+#include <gtest/gtest.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <atomic>
@@ -109,7 +108,8 @@ Poly_mesh to_poly(const Mesh_buffers& b) {
 
 Mesh_buffers poly_to_buffers(const Poly_mesh& m) {
   Mesh_buffers b;
-  for (const Vec& p : m.points) b.positions.insert(b.positions.end(), p.begin(), p.end());
+  for (const Vec& p : m.points)
+    b.positions.insert(b.positions.end(), p.begin(), p.end());
   for (const auto& f : m.faces) {
     b.face_sizes.push_back(static_cast<std::uint32_t>(f.size()));
     b.face_indices.insert(b.face_indices.end(), f.begin(), f.end());
@@ -210,8 +210,8 @@ Topology topology(const Mesh_buffers& b) {
 /// a and b are the same mesh up to vertex and face order: a one-to-one
 /// vertex match by position (to `tol` per coordinate) under which the faces
 /// are the same cycles.
-void expect_same_mesh(const Mesh_buffers& a, const Mesh_buffers& b,
-                      double tol, const std::string& what) {
+void expect_same_mesh(const Mesh_buffers& a, const Mesh_buffers& b, double tol,
+                      const std::string& what) {
   ASSERT_EQ(a.vertex_count(), b.vertex_count()) << what;
   ASSERT_EQ(a.face_count(), b.face_count()) << what;
   const std::size_t n = a.vertex_count();
@@ -254,13 +254,15 @@ void expect_same_mesh(const Mesh_buffers& a, const Mesh_buffers& b,
   std::size_t o = 0;
   for (std::uint32_t d : a.face_sizes) {
     std::vector<std::uint32_t> f;
-    for (std::uint32_t k = 0; k < d; ++k) f.push_back(match[a.face_indices[o + k]]);
+    for (std::uint32_t k = 0; k < d; ++k)
+      f.push_back(match[a.face_indices[o + k]]);
     fa.insert(canonical(f));
     o += d;
   }
   o = 0;
   for (std::uint32_t d : b.face_sizes) {
-    fb.insert(canonical({b.face_indices.begin() + o, b.face_indices.begin() + o + d}));
+    fb.insert(canonical(
+        {b.face_indices.begin() + o, b.face_indices.begin() + o + d}));
     o += d;
   }
   EXPECT_TRUE(fa == fb) << what << ": same points, different faces";
@@ -275,8 +277,8 @@ bool has_point(const Mesh_buffers& b, const Vec& p, double tol = 1e-12) {
   return false;
 }
 
-const std::vector<std::string> kSchemes = {"catmull-clark", "loop",
-                                           "doo-sabin", "sqrt3"};
+const std::vector<std::string> kSchemes = {"catmull-clark", "loop", "doo-sabin",
+                                           "sqrt3"};
 
 struct Case {
   const char* fixture;
@@ -311,7 +313,8 @@ TEST(SubdivideCounts, EverySchemeEveryFixtureLevelsOneToThree) {
       const bool triangulate = needs_triangles && !c.triangles;
       const Topology topo0 = topology(in);
       // Level 0 (after triangulation when asked): the chain's start.
-      Mesh_buffers previous = subdivided(in, options_for(scheme, 0, 0, triangulate));
+      Mesh_buffers previous =
+          subdivided(in, options_for(scheme, 0, 0, triangulate));
       if (triangulate) {
         std::size_t expected_f = 0;
         for (std::uint32_t d : in.face_sizes) expected_f += d - 2;
@@ -322,8 +325,8 @@ TEST(SubdivideCounts, EverySchemeEveryFixtureLevelsOneToThree) {
       for (int level = 1; level <= 3; ++level) {
         const Subdivide_options o = options_for(scheme, level, 0, triangulate);
         const Mesh_buffers out = subdivided(in, o);
-        const std::string what = scheme + " level " + std::to_string(level) +
-                                 " of " + c.fixture;
+        const std::string what =
+            scheme + " level " + std::to_string(level) + " of " + c.fixture;
         const Counts3 expected =
             expected_after_step(to_poly(previous), scheme, level - 1);
         const Counts3 got = counts_of(to_poly(out));
@@ -367,8 +370,8 @@ TEST(SubdivideCounts, CubeCatmullClarkAbsoluteNumbers) {
   const std::size_t v[] = {26, 98, 386}, e[] = {48, 192, 768},
                     f[] = {24, 96, 384};
   for (int level = 1; level <= 3; ++level) {
-    const Counts3 c =
-        counts_of(to_poly(subdivided(cube, options_for("catmull-clark", level))));
+    const Counts3 c = counts_of(
+        to_poly(subdivided(cube, options_for("catmull-clark", level))));
     EXPECT_EQ(c.v, v[level - 1]);
     EXPECT_EQ(c.e, e[level - 1]);
     EXPECT_EQ(c.f, f[level - 1]);
@@ -396,10 +399,9 @@ TEST(SubdivideCounts, SchemeNamesInDisplayOrder) {
 // Positions against the plain reference implementations.
 
 TEST(SubdividePositions, CatmullClarkMatchesReferenceOnClosedAndOpenMeshes) {
-  for (const char* fixture :
-       {"cube.off", "tetrahedron.off", "torus-quad.off",
-        "rhombicuboctahedron.off", "grid-open.off", "mixed-open.off",
-        "disk-tri.off"}) {
+  for (const char* fixture : {"cube.off", "tetrahedron.off", "torus-quad.off",
+                              "rhombicuboctahedron.off", "grid-open.off",
+                              "mixed-open.off", "disk-tri.off"}) {
     const Mesh_buffers in = load(fixture);
     Poly_mesh ref = to_poly(in);
     for (int level = 1; level <= 2; ++level) {
@@ -414,9 +416,9 @@ TEST(SubdividePositions, CatmullClarkMatchesReferenceOnClosedAndOpenMeshes) {
 }
 
 TEST(SubdividePositions, LoopMatchesReferenceOnClosedAndOpenMeshes) {
-  for (const char* fixture : {"tetrahedron.off", "octahedron.off",
-                              "icosahedron.off", "torus-tri.off",
-                              "disk-tri.off", "two-tetrahedra.off"}) {
+  for (const char* fixture :
+       {"tetrahedron.off", "octahedron.off", "icosahedron.off", "torus-tri.off",
+        "disk-tri.off", "two-tetrahedra.off"}) {
     const Mesh_buffers in = load(fixture);
     Poly_mesh ref = to_poly(in);
     for (int level = 1; level <= 2; ++level) {
@@ -447,7 +449,8 @@ TEST(SubdividePositions, HandComputedValues) {
   // -(2/3)(1,1,1); vertex point (Q + 2R + (n-3) S) / n = -(5/9)(1,1,1).
   // Edge (-1,-1,-1)-(1,-1,-1): (v1 + v2 + f1 + f2)/4 with face points
   // (0,-1,0) and (0,0,-1) -> (0, -3/4, -3/4).
-  const Mesh_buffers cc = subdivided(load("cube.off"), options_for("catmull-clark", 1));
+  const Mesh_buffers cc =
+      subdivided(load("cube.off"), options_for("catmull-clark", 1));
   EXPECT_TRUE(has_point(cc, {-5.0 / 9, -5.0 / 9, -5.0 / 9}));
   EXPECT_TRUE(has_point(cc, {5.0 / 9, 5.0 / 9, 5.0 / 9}));
   EXPECT_TRUE(has_point(cc, {0, -0.75, -0.75}));
@@ -457,7 +460,8 @@ TEST(SubdividePositions, HandComputedValues) {
   // 0; alpha(4) = 5/8 - (3/8 + 1/4 cos(pi/2))^2 = 31/64, so it goes to
   // (1 - 31/64)(1,0,0) = (33/64, 0, 0). Edge (1,0,0)-(0,1,0) with opposite
   // vertices (0,0,1), (0,0,-1): 3/8 (1,1,0) + 1/8 (0,0,0) = (3/8, 3/8, 0).
-  const Mesh_buffers loop = subdivided(load("octahedron.off"), options_for("loop", 1));
+  const Mesh_buffers loop =
+      subdivided(load("octahedron.off"), options_for("loop", 1));
   EXPECT_TRUE(has_point(loop, {33.0 / 64, 0, 0}));
   EXPECT_TRUE(has_point(loop, {0, 0, -33.0 / 64}));
   EXPECT_TRUE(has_point(loop, {0.375, 0.375, 0}));
@@ -465,13 +469,15 @@ TEST(SubdividePositions, HandComputedValues) {
   // sqrt3, tetrahedron (+-1 coordinates): valence 3, a = (4 - 2 cos(2pi/3))/9
   // = 5/9; (1,1,1) goes to (1 - a) v + a/3 sum(neighbours) = 4/9 (1,1,1) +
   // 5/27 (-1,-1,-1) = 7/27 (1,1,1); face points are centroids.
-  const Mesh_buffers s3 = subdivided(load("tetrahedron.off"), options_for("sqrt3", 1));
+  const Mesh_buffers s3 =
+      subdivided(load("tetrahedron.off"), options_for("sqrt3", 1));
   EXPECT_TRUE(has_point(s3, {7.0 / 27, 7.0 / 27, 7.0 / 27}));
   EXPECT_TRUE(has_point(s3, {1.0 / 3, 1.0 / 3, -1.0 / 3}));  // face 0,1,2
 
   // Doo-Sabin, cube: the corner of face x = -1 at (-1,-1,-1) is
   // (9 v + 3 (two face neighbours) + opposite) / 16 = -(1, 1/2, 1/2).
-  const Mesh_buffers ds = subdivided(load("cube.off"), options_for("doo-sabin", 1));
+  const Mesh_buffers ds =
+      subdivided(load("cube.off"), options_for("doo-sabin", 1));
   EXPECT_TRUE(has_point(ds, {-1, -0.5, -0.5}));
   EXPECT_TRUE(has_point(ds, {0.5, 1, 0.5}));
 }
@@ -588,7 +594,8 @@ TEST(SubdivideDooSabin, OpenMeshesWithFansAndMixedFaces) {
     std::vector<Vec> chaikin = control;
     for (int level = 1; level <= 3; ++level) {
       const Mesh_buffers out = subdivided(in, options_for("doo-sabin", level));
-      const std::string what = std::string(fixture) + " level " + std::to_string(level);
+      const std::string what =
+          std::string(fixture) + " level " + std::to_string(level);
       expect_valid(out, what);
       chaikin = reference::chaikin(chaikin);
       expect_same_loop(border_points(out), chaikin, what);
@@ -610,7 +617,8 @@ TEST(SubdivideSqrt3, StepwiseEqualsOneCallOnOpenMeshes) {
     Mesh_buffers stepwise = in;
     Mesh cgal;
     for (int level = 1; level <= 4; ++level) {
-      const std::string what = std::string(fixture) + " level " + std::to_string(level);
+      const std::string what =
+          std::string(fixture) + " level " + std::to_string(level);
       stepwise = subdivided(stepwise, options_for("sqrt3", 1, level - 1));
       const Mesh_buffers at_once = subdivided(in, options_for("sqrt3", level));
       expect_valid(stepwise, what);
@@ -634,10 +642,12 @@ TEST(SubdivideSqrt3, OddStartLevelOnAMeshNotFromSqrt3IsRefused) {
   // the triangulated grid has corner triangles with two border edges.
   const Mesh_buffers grid =
       subdivided(load("grid-open.off"), options_for("sqrt3", 0, 0, true));
-  const Result<Mesh_buffers> r = subdivide_mesh(grid, options_for("sqrt3", 1, 1));
+  const Result<Mesh_buffers> r =
+      subdivide_mesh(grid, options_for("sqrt3", 1, 1));
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
-  EXPECT_NE(r.status.message.find("more than one border edge"), std::string::npos)
+  EXPECT_NE(r.status.message.find("more than one border edge"),
+            std::string::npos)
       << r.status.message;
   EXPECT_TRUE(subdivide_mesh(grid, options_for("sqrt3", 2, 0)).ok());
 }
@@ -652,9 +662,11 @@ TEST(SubdivideErrors, LoopAndSqrt3NeedTrianglesUnlessTriangulating) {
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.status.code, Status_code::not_triangles);
     EXPECT_EQ(r.status.message,
-              scheme + " needs a triangle mesh: 6 of 6 faces are not "
-                       "triangles; triangulate first (option triangulate)");
-    const Result<Size_prediction> p = predict_size(cube, options_for(scheme, 1));
+              scheme +
+                  " needs a triangle mesh: 6 of 6 faces are not "
+                  "triangles; triangulate first (option triangulate)");
+    const Result<Size_prediction> p =
+        predict_size(cube, options_for(scheme, 1));
     EXPECT_EQ(p.status.code, Status_code::not_triangles);
     EXPECT_EQ(p.status.message, r.status.message);
     const Mesh_buffers t = subdivided(cube, options_for(scheme, 1, 0, true));
@@ -671,9 +683,11 @@ TEST(SubdivideErrors, UnknownSchemeAndNegativeLevels) {
   const Mesh_buffers cube = load("cube.off");
   Result<Mesh_buffers> r = subdivide_mesh(cube, options_for("butterfly", 1));
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
-  EXPECT_EQ(r.status.message.rfind("unknown scheme \"butterfly\"; known schemes: "
-                                   "catmull-clark, loop, doo-sabin, sqrt3", 0),
-            0u)
+  EXPECT_EQ(
+      r.status.message.rfind("unknown scheme \"butterfly\"; known schemes: "
+                             "catmull-clark, loop, doo-sabin, sqrt3",
+                             0),
+      0u)
       << r.status.message;
   EXPECT_EQ(predict_size(cube, options_for("butterfly", 1)).status.code,
             Status_code::invalid_argument);
@@ -690,7 +704,8 @@ TEST(SubdivideErrors, UnknownSchemeAndNegativeLevels) {
 TEST(SubdivideErrors, InvalidMeshIsReportedByBuildMesh) {
   Mesh_buffers bad = load("cube.off");
   bad.face_indices[0] = 99;
-  const Result<Mesh_buffers> r = subdivide_mesh(bad, options_for("catmull-clark", 1));
+  const Result<Mesh_buffers> r =
+      subdivide_mesh(bad, options_for("catmull-clark", 1));
   EXPECT_FALSE(r.ok());
   EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
 }
@@ -757,7 +772,8 @@ Mesh_buffers torus(int nu, int nv, bool triangles) {
   };
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
-      const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1),
+                 d = at(i, j + 1);
       if (triangles) {
         m.faces.push_back({a, b, c});
         m.faces.push_back({a, c, d});
@@ -773,11 +789,15 @@ Mesh_buffers grid(int nx, int ny, bool triangles) {
   Poly_mesh m;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i)
-      m.points.push_back({double(i), double(j), std::sin(0.1 * i) * std::cos(0.1 * j)});
-  auto at = [&](int i, int j) { return static_cast<std::uint32_t>(j * (nx + 1) + i); };
+      m.points.push_back(
+          {double(i), double(j), std::sin(0.1 * i) * std::cos(0.1 * j)});
+  auto at = [&](int i, int j) {
+    return static_cast<std::uint32_t>(j * (nx + 1) + i);
+  };
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1),
+                 d = at(i, j + 1);
       if (triangles) {
         m.faces.push_back({a, b, c});
         m.faces.push_back({a, c, d});
@@ -811,15 +831,20 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
   };
   // An odd sqrt3 step on a mesh from an even one.
   probes.push_back({"sqrt3", "tri grid 120x100 (odd)",
-                    subdivided(grid(120, 100, true), options_for("sqrt3", 1)), 1});
+                    subdivided(grid(120, 100, true), options_for("sqrt3", 1)),
+                    1});
   // Several levels in one call: the capacities CGAL's hosts leave behind
   // carry over to the next step.
-  probes.push_back({"catmull-clark", "quad torus 40x20 x3", torus(40, 20, false), 0, 3});
-  probes.push_back({"catmull-clark", "mixed-open x3", load("mixed-open.off"), 0, 5});
+  probes.push_back(
+      {"catmull-clark", "quad torus 40x20 x3", torus(40, 20, false), 0, 3});
+  probes.push_back(
+      {"catmull-clark", "mixed-open x3", load("mixed-open.off"), 0, 5});
   probes.push_back({"loop", "tri torus 40x20 x3", torus(40, 20, true), 0, 3});
   probes.push_back({"loop", "tri grid 30x20 x3", grid(30, 20, true), 0, 3});
-  probes.push_back({"doo-sabin", "quad torus 40x20 x3", torus(40, 20, false), 0, 3});
-  probes.push_back({"doo-sabin", "quad grid 30x20 x3", grid(30, 20, false), 0, 3});
+  probes.push_back(
+      {"doo-sabin", "quad torus 40x20 x3", torus(40, 20, false), 0, 3});
+  probes.push_back(
+      {"doo-sabin", "quad grid 30x20 x3", grid(30, 20, false), 0, 3});
   probes.push_back({"sqrt3", "tri torus 40x20 x4", torus(40, 20, true), 0, 4});
   probes.push_back({"sqrt3", "tri grid 30x20 x4", grid(30, 20, true), 0, 4});
   for (const Probe& p : probes) {
@@ -827,7 +852,8 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
     const Result<Size_prediction> predicted = predict_size(p.in, o);
     ASSERT_TRUE(predicted.ok());
     // The input buffers count: they live through the call.
-    const std::size_t input = p.in.positions.size() * 8 + p.in.face_sizes.size() * 4 +
+    const std::size_t input = p.in.positions.size() * 8 +
+                              p.in.face_sizes.size() * 4 +
                               p.in.face_indices.size() * 4;
     const std::size_t before = g_live;
     g_peak = before;
@@ -839,9 +865,11 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
     }
     const double measured = static_cast<double>(g_peak - before + input);
     const double model = static_cast<double>(predicted.value.peak_bytes);
-    std::printf("  %-14s %-26s %8zu faces: measured %9.0f B, model %9.0f B (%.2fx), %.0f B/face\n",
-                p.scheme, p.mesh, faces, measured, model, model / measured,
-                measured / faces);
+    std::printf(
+        "  %-14s %-26s %8zu faces: measured %9.0f B, model %9.0f B (%.2fx), "
+        "%.0f B/face\n",
+        p.scheme, p.mesh, faces, measured, model, model / measured,
+        measured / faces);
     EXPECT_GE(model, measured) << p.scheme << " on " << p.mesh;
     EXPECT_LE(model, 1.5 * measured) << p.scheme << " on " << p.mesh;
   }

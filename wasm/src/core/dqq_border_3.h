@@ -33,9 +33,9 @@
 // On a closed mesh this is V' = 2E, E' = 4E, F' = V + E + F, as CGAL's DQQ.
 #pragma once
 
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Subdivision_method_3/subdivision_masks_3.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -73,8 +73,7 @@ class DooSabin_border_mask_3
   /// Corner points of the face of `hd` on its border edge (`hd` is the
   /// non-border halfedge of a border edge): `at_target` near target(hd),
   /// `at_source` near source(hd).
-  void border_node(halfedge_descriptor hd, Point& at_target,
-                   Point& at_source) {
+  void border_node(halfedge_descriptor hd, Point& at_target, Point& at_source) {
     const PolygonMesh& m = *(this->pmesh);
     const Point& t = get(this->vpm, target(hd, m));
     const Point& s = get(this->vpm, source(hd, m));
@@ -163,7 +162,8 @@ void DQQ_border_1step(CGAL::Surface_mesh<P>& sm, Mask mask) {
     // F-faces.
     for (auto f : sm.faces()) {
       const std::size_t first = indices.size();
-      for (halfedge_descriptor h : CGAL::halfedges_around_face(sm.halfedge(f), sm)) {
+      for (halfedge_descriptor h :
+           CGAL::halfedges_around_face(sm.halfedge(f), sm)) {
         indices.push_back(corner[h.idx()]);
         if (ear_second[h.idx()] != none) indices.push_back(ear_second[h.idx()]);
       }
@@ -232,13 +232,15 @@ void DQQ_border_1step(CGAL::Surface_mesh<P>& sm, Mask mask) {
 /// and use its internal vertex point map (kept valid across steps).
 template <class PolygonMesh, class Mask,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
-void DQQ_border(PolygonMesh& pmesh, Mask mask,
-                const NamedParameters& np = CGAL::parameters::default_values()) {
+void DQQ_border(
+    PolygonMesh& pmesh, Mask mask,
+    const NamedParameters& np = CGAL::parameters::default_values()) {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const unsigned int steps = choose_parameter(
       get_parameter(np, CGAL::internal_np::number_of_iterations), 1);
-  for (unsigned int i = 0; i < steps; ++i) internal::DQQ_border_1step(pmesh, mask);
+  for (unsigned int i = 0; i < steps; ++i)
+    internal::DQQ_border_1step(pmesh, mask);
 }
 
 /// Doo-Sabin subdivision that works on meshes with borders (see above).

@@ -7,10 +7,6 @@
 // refines the border on every second step; the step parity is carried
 // through Subdivide_options::start_level).
 
-#include "control_edges.h"
-#include "custom_rules.h"
-#include "linear_masks_3.h"
-#include "quad_triangle_3.h"
 #include "subdivide.h"
 
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -29,8 +25,12 @@
 #include <string>
 #include <vector>
 
+#include "control_edges.h"
+#include "custom_rules.h"
 #include "dqq_border_3.h"
+#include "linear_masks_3.h"
 #include "mesh_build.h"
+#include "quad_triangle_3.h"
 
 namespace subdivlab {
 namespace {
@@ -78,7 +78,10 @@ std::string size_model(const Subdivide_options& o) {
   if (o.scheme == "linear-tri") return "loop";
   if (o.scheme == "custom") {
     const std::string& h = o.custom.host;
-    return h == "pqq" ? "catmull-clark" : h == "ptq" ? "loop" : h == "dqq" ? "doo-sabin" : "sqrt3";
+    return h == "pqq"   ? "catmull-clark"
+           : h == "ptq" ? "loop"
+           : h == "dqq" ? "doo-sabin"
+                        : "sqrt3";
   }
   return o.scheme;
 }
@@ -234,8 +237,8 @@ Counts next_counts(const std::string& scheme, const Counts& c,
 // 64-bit ones, which bound wasm32's (its list/map nodes hold 4-byte
 // pointers). The input buffers live through the whole call and are added.
 
-constexpr double kVertexBytes = 28.125, kHalfedgeBytes = 16,
-                 kEdgeBytes = 0.125, kFaceBytes = 4.125;
+constexpr double kVertexBytes = 28.125, kHalfedgeBytes = 16, kEdgeBytes = 0.125,
+                 kFaceBytes = 4.125;
 constexpr double kMapEntryBytes = 40, kListNodeBytes = 64;
 constexpr double kPointBytes = 24, kDescriptorBytes = 4;
 /// Allocator slack and small fixed allocations. Under WebAssembly,
@@ -261,7 +264,8 @@ double caps_bytes(const Caps& c) {
 /// Live and peak bytes of a simulated heap, with the mesh arrays in it.
 class Heap_model {
  public:
-  Heap_model(double live, const Caps& caps) : live_(live), peak_(live), caps_(caps) {}
+  Heap_model(double live, const Caps& caps)
+      : live_(live), peak_(live), caps_(caps) {}
   void alloc(double bytes) {
     live_ += bytes;
     peak_ = std::max(peak_, live_);
@@ -470,8 +474,8 @@ Step_need step_need(const std::string& scheme, const Counts& c,
   double peak = simulate_step(scheme, c, need.after, need.caps_after,
                               input_bytes, global_step);
   if (last)
-    peak = std::max(peak, to_buffers_peak(need.after, need.caps_after,
-                                          input_bytes));
+    peak = std::max(peak,
+                    to_buffers_peak(need.after, need.caps_after, input_bytes));
   need.peak_bytes = peak * kSlackFactor + kSlackBytes;
   return need;
 }
@@ -496,8 +500,8 @@ Status check_step(const std::string& scheme, const Step_need& need,
     return too_large(scheme, global_step + 1, need, 0,
                      "more elements than a mesh can index (2^32)");
   if (limit != 0 && need.peak_bytes > static_cast<double>(limit))
-    return too_large(scheme, global_step + 1, need,
-                     static_cast<double>(limit), nullptr);
+    return too_large(scheme, global_step + 1, need, static_cast<double>(limit),
+                     nullptr);
   return Status::success();
 }
 
@@ -510,11 +514,10 @@ Status check_options(const Subdivide_options& options) {
                          "unknown scheme \"" + options.scheme +
                              "\"; known schemes: " + scheme_list());
   if (options.levels < 0)
-    return Status::error(Status_code::invalid_argument,
-                         "levels must be 0 or more (got " +
-                             std::to_string(options.levels) + ") for " +
-                             options.scheme + "; known schemes: " +
-                             scheme_list());
+    return Status::error(
+        Status_code::invalid_argument,
+        "levels must be 0 or more (got " + std::to_string(options.levels) +
+            ") for " + options.scheme + "; known schemes: " + scheme_list());
   if (options.start_level < 0)
     return Status::error(Status_code::invalid_argument,
                          "start_level must be 0 or more (got " +
@@ -585,9 +588,10 @@ Status sqrt3_step(Mesh& mesh, int global_step) {
             " faces have more than one border edge; start from level 0");
   // The public Sqrt3_subdivision ties the border parity to its own loop
   // counter, so a single border step needs the host CGAL's loop calls.
-  SM3::internal::Sqrt3_1step(mesh, get(CGAL::vertex_point, mesh),
-                             CGAL::Sqrt3_mask_3<Mesh>(&mesh, get(CGAL::vertex_point, mesh)),
-                             /*refine_border=*/true);
+  SM3::internal::Sqrt3_1step(
+      mesh, get(CGAL::vertex_point, mesh),
+      CGAL::Sqrt3_mask_3<Mesh>(&mesh, get(CGAL::vertex_point, mesh)),
+      /*refine_border=*/true);
   return Status::success();
 }
 
@@ -597,8 +601,7 @@ Status sqrt3_step(Mesh& mesh, int global_step) {
 /// steps of this call from 0; the step's level in the mesh's history is
 /// options.start_level + level_index (sqrt3's border parity). May throw
 /// (CGAL, bad_alloc): subdivide_mesh catches.
-Status run_step(Mesh& mesh, const Subdivide_options& options,
-                int level_index) {
+Status run_step(Mesh& mesh, const Subdivide_options& options, int level_index) {
   const std::string& scheme = options.scheme;
   const int global_step = options.start_level + level_index;
   const auto one_step = CGAL::parameters::number_of_iterations(1);
@@ -623,18 +626,20 @@ Status run_step(Mesh& mesh, const Subdivide_options& options,
   } else if (scheme == "custom") {
     // Valences and face degrees grow with the steps: check every step.
     s = check_custom_rules_cover(options.custom, mesh);
-    if (s.ok() && options.custom.host == "sqrt3" && sqrt3_refines_border(global_step) &&
-        !CGAL::is_closed(mesh) && counts_of(mesh).multi_border_faces > 0)
-      s = Status::error(Status_code::invalid_argument,
-                        "start_level " + std::to_string(global_step) +
-                            " of custom (sqrt3 host) refines the border, which needs a mesh "
-                            "from an even level, but some faces have more than one border "
-                            "edge; start from level 0");
+    if (s.ok() && options.custom.host == "sqrt3" &&
+        sqrt3_refines_border(global_step) && !CGAL::is_closed(mesh) &&
+        counts_of(mesh).multi_border_faces > 0)
+      s = Status::error(
+          Status_code::invalid_argument,
+          "start_level " + std::to_string(global_step) +
+              " of custom (sqrt3 host) refines the border, which needs a mesh "
+              "from an even level, but some faces have more than one border "
+              "edge; start from level 0");
     if (s.ok()) custom_subdivision_step(mesh, options.custom, global_step);
   } else {
-    return Status::error(Status_code::invalid_argument,
-                         "unknown scheme \"" + scheme +
-                             "\"; known schemes: " + scheme_list());
+    return Status::error(
+        Status_code::invalid_argument,
+        "unknown scheme \"" + scheme + "\"; known schemes: " + scheme_list());
   }
   collect_removed(mesh);
   return s;
@@ -658,7 +663,8 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
     // Marks the primal schemes carry (before any triangulation).
     double marks = 0;
     if (scheme_keeps_control_edges(options))
-      marks = !in.control_edges.empty() ? static_cast<double>(in.control_edges.size() / 2)
+      marks = !in.control_edges.empty()
+                  ? static_cast<double>(in.control_edges.size() / 2)
               : options.start_level == 0 ? c.edges
                                          : 0;
     if (needs_triangles(options) && c.non_triangles > 0) {
@@ -668,10 +674,10 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
       }
       c = triangulated(c);
     }
-    const double input = buffers_bytes(
-        static_cast<double>(in.vertex_count()),
-        static_cast<double>(in.face_count()),
-        static_cast<double>(in.face_indices.size()));
+    const double input =
+        buffers_bytes(static_cast<double>(in.vertex_count()),
+                      static_cast<double>(in.face_count()),
+                      static_cast<double>(in.face_indices.size()));
     Caps caps = Caps::exact(c);
     double peak = to_buffers_peak(c, caps, input) * kSlackFactor + kSlackBytes;
     for (int i = 0; i < options.levels; ++i) {
@@ -710,28 +716,31 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
     const bool track = s.ok() && scheme_keeps_control_edges(options);
     Control_edges control;
     if (track) {
-      Result<Control_edges> ce = initial_control_edges(in, mesh, options.start_level);
+      Result<Control_edges> ce =
+          initial_control_edges(in, mesh, options.start_level);
       s = ce.status;
       control = std::move(ce.value);
     }
-    const double input = buffers_bytes(
-        static_cast<double>(in.vertex_count()),
-        static_cast<double>(in.face_count()),
-        static_cast<double>(in.face_indices.size()));
+    const double input =
+        buffers_bytes(static_cast<double>(in.vertex_count()),
+                      static_cast<double>(in.face_count()),
+                      static_cast<double>(in.face_indices.size()));
     // The model follows the real mesh: its counts are re-read after every
     // step, the array capacities simulated (they are not observable).
     Caps caps = Caps::exact(counts);
     for (int i = 0; s.ok() && i < options.levels; ++i) {
       level = options.start_level + i + 1;
-      const Step_need need =
-          step_need(size_model(options), counts, caps, options.start_level + i,
-                    i + 1 == options.levels,
-                    input + control_edge_bytes(static_cast<double>(control.size())));
+      const Step_need need = step_need(
+          size_model(options), counts, caps, options.start_level + i,
+          i + 1 == options.levels,
+          input + control_edge_bytes(static_cast<double>(control.size())));
       s = check_step(options.scheme, need, options.start_level + i,
                      options.memory_limit_bytes);
-      const auto old_end = static_cast<std::uint32_t>(mesh.number_of_vertices());
+      const auto old_end =
+          static_cast<std::uint32_t>(mesh.number_of_vertices());
       if (s.ok()) s = run_step(mesh, options, i);
-      if (s.ok() && track) control = refine_control_edges(mesh, old_end, control);
+      if (s.ok() && track)
+        control = refine_control_edges(mesh, old_end, control);
       if (s.ok()) {
         counts = counts_of(mesh);
         caps = need.caps_after;
@@ -742,27 +751,28 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       return result;
     }
     result.value = to_buffers(mesh);
-    if (track) result.value.control_edges = control_edges_to_buffers(mesh, control);
+    if (track)
+      result.value.control_edges = control_edges_to_buffers(mesh, control);
   } catch (const CGAL::Failure_exception& e) {
-    result.status = Status::error(
-        Status_code::internal_error,
-        "CGAL failed at level " + std::to_string(level) + " of " +
-            options.scheme + ": " + e.what());
+    result.status =
+        Status::error(Status_code::internal_error,
+                      "CGAL failed at level " + std::to_string(level) + " of " +
+                          options.scheme + ": " + e.what());
   } catch (const std::bad_alloc& e) {
-    result.status = Status::error(
-        Status_code::internal_error,
-        "out of memory at level " + std::to_string(level) + " of " +
-            options.scheme + " (" + e.what() + ")");
+    result.status =
+        Status::error(Status_code::internal_error,
+                      "out of memory at level " + std::to_string(level) +
+                          " of " + options.scheme + " (" + e.what() + ")");
   } catch (const std::exception& e) {
-    result.status = Status::error(
-        Status_code::internal_error,
-        "internal error at level " + std::to_string(level) + " of " +
-            options.scheme + ": " + e.what());
+    result.status =
+        Status::error(Status_code::internal_error,
+                      "internal error at level " + std::to_string(level) +
+                          " of " + options.scheme + ": " + e.what());
   } catch (...) {
-    result.status = Status::error(
-        Status_code::internal_error,
-        "internal error at level " + std::to_string(level) + " of " +
-            options.scheme + ": unknown exception");
+    result.status =
+        Status::error(Status_code::internal_error,
+                      "internal error at level " + std::to_string(level) +
+                          " of " + options.scheme + ": unknown exception");
   }
   return result;
 }
