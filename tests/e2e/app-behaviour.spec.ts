@@ -35,6 +35,26 @@ test('the gallery opens sample meshes', async ({ app }) => {
   expect(await app.facts()).toMatchObject({ vertices: 169, edges: 312, faces: 144, boundaries: 1 });
 });
 
+test('quad-triangle on the rhombicuboctahedron from the gallery', async ({ app }) => {
+  await app.open();
+  await app.byTestId('gallery').locator('summary').click();
+  await app.byTestId('gallery.rhombicuboctahedron').click();
+  await expect(app.byTestId('facts.model')).toHaveText('rhombicuboctahedron.off');
+  await app.chooseScheme('quad-triangle');
+  await expect(app.byTestId('controls.scheme-description')).toContainText('triangles and quads');
+  await app.subdivide();
+  // Triangles split 1→4 at edge midpoints, quads 1→4 around a centre: V + E + Q vertices,
+  // 2E + 3T + 4Q edges, 4T triangles and 4Q quads.
+  expect(await app.facts()).toMatchObject({
+    vertices: 24 + 48 + 18,
+    edges: 2 * 48 + 3 * 8 + 4 * 18,
+    faces: 104,
+    genus: 0,
+    faceTypes: '32 triangles, 72 quads',
+  });
+  await expect(app.byTestId('facts.control-edges')).toHaveText('96');
+});
+
 test('Open… and the O key open the file picker', async ({ app }) => {
   await app.open();
   const [chooser] = await Promise.all([app.page.waitForEvent('filechooser'), app.byTestId('open.button').click()]);

@@ -57,6 +57,27 @@ test('render modes, the control-mesh overlay and the bounding box change the pic
   });
 });
 
+test('control-edge curves: the marked edges of a refined level, drawn and exported', async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  const toggle = app.byTestId('controls.overlay-curves');
+  await expect(toggle).toBeDisabled();
+  for (let i = 0; i < 3; i++) await app.subdivide();
+  // Every cube edge is split in two at each step: 12·2³ marked edges at level 3.
+  expect((await app.state()).facts?.controlEdges).toBe(96);
+  await expect(toggle).toBeEnabled();
+  const before = await app.canvasPixels();
+  await app.page.keyboard.press('e');
+  expect((await app.state()).overlays.curves).toBe(true);
+  await expect(toggle).toBeChecked();
+  expect((await app.canvasPixels()).equals(before)).toBe(false);
+  await app.snapshot('06-control-curves');
+  await app.byTestId('export-panel').locator('summary').click();
+  const svg = await readFile(await (await app.download('export.svg')).path(), 'utf8');
+  const path = /<path id="control-curves"[^>]* d="([^"]*)"/.exec(svg);
+  expect(path?.[1].split('M').length).toBe(96 + 1);
+});
+
 test('PNG export: signature, ×2 doubles the size, transparent background', async ({ app }) => {
   await app.open();
   await app.load('cube.off', CUBE);

@@ -12,6 +12,7 @@ const ROWS: readonly { key: string; label: string; value: (f: MeshFacts) => stri
   { key: 'euler', label: 'Euler characteristic', value: (f) => String(f.eulerCharacteristic) },
   { key: 'genus', label: 'Genus', value: (f) => String(f.genus) },
   { key: 'face-types', label: 'Face types', value: faceTypes },
+  { key: 'control-edges', label: 'Control edges', value: (f) => String(f.controlEdges) },
 ];
 
 /** "8 triangles, 18 quads", "6 quads", "1 other". */
