@@ -2,8 +2,6 @@
 
 #include <CGAL/boost/graph/iterator.h>
 
-#include <algorithm>
-#include <set>
 
 #include "custom_rules.h"
 
@@ -36,14 +34,18 @@ Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& 
   if (in.control_edges.empty()) {
     if (start_level != 0) return r;
     // The edges of the faces as given, so that a mesh triangulated before
-    // the first step keeps its polygon edges only.
-    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    // the first step keeps its polygon edges only. A bit per mesh edge
+    // finds the duplicates (the memory model counts 8 bytes per mark).
+    std::vector<bool> seen(mesh.num_edges(), false);
     std::size_t o = 0;
     for (std::uint32_t k : in.face_sizes) {
       for (std::uint32_t i = 0; i < k; ++i) {
         const std::uint32_t a = rank[in.face_indices[o + i]];
         const std::uint32_t b = rank[in.face_indices[o + (i + 1) % k]];
-        if (seen.insert({std::min(a, b), std::max(a, b)}).second) r.value.emplace_back(a, b);
+        const Mesh::Halfedge_index h = mesh.halfedge(vertex(a), vertex(b));
+        if (h == Mesh::null_halfedge() || seen[mesh.edge(h).idx()]) continue;
+        seen[mesh.edge(h).idx()] = true;
+        r.value.emplace_back(a, b);
       }
       o += k;
     }
