@@ -35,7 +35,13 @@
 namespace {
 std::atomic<std::size_t> g_live{0}, g_peak{0};
 
+/// When non-zero, an allocation that would take the live bytes above this
+/// fails with std::bad_alloc (to test that nothing throws out).
+std::atomic<std::size_t> g_fail_above{0};
+
 void* counted_alloc(std::size_t n) {
+  const std::size_t limit = g_fail_above;
+  if (limit != 0 && g_live + n > limit) throw std::bad_alloc();
   void* p = std::malloc(n == 0 ? 1 : n);
   if (p == nullptr) throw std::bad_alloc();
   const std::size_t live = g_live += malloc_usable_size(p);
@@ -603,6 +609,32 @@ TEST(SubdivideDooSabin, OpenMeshesWithFansAndMixedFaces) {
   }
 }
 
+TEST(SubdivideDooSabin, SinglePolygonsBecomeTheirChaikinPolygon) {
+  // Every corner of a lone polygon is an ear: one F-face through two points
+  // per corner, at 3/4 v + 1/4 (neighbour) -- Chaikin's cut polygon.
+  Mesh_buffers triangle;
+  triangle.positions = {0, 0, 0, 4, 0, 0, 0, 4, 0};
+  triangle.face_sizes = {3};
+  triangle.face_indices = {0, 1, 2};
+  Mesh_buffers quad;
+  quad.positions = {0, 0, 0, 4, 0, 0, 4, 4, 1, 0, 4, 0};
+  quad.face_sizes = {4};
+  quad.face_indices = {0, 1, 2, 3};
+  for (const Mesh_buffers* in : {&triangle, &quad}) {
+    const std::vector<Vec> control = border_points(*in);
+    const Mesh_buffers one = subdivided(*in, options_for("doo-sabin", 1));
+    ASSERT_EQ(one.face_count(), 1u);
+    EXPECT_EQ(one.face_sizes[0], 2 * in->face_sizes[0]);
+    expect_same_loop(border_points(one), reference::chaikin(control),
+                     "doo-sabin of a lone polygon");
+    const Mesh_buffers two = subdivided(*in, options_for("doo-sabin", 2));
+    EXPECT_EQ(two.face_count(), 1u);
+    expect_same_loop(border_points(two),
+                     reference::chaikin(reference::chaikin(control)),
+                     "doo-sabin level 2 of a lone polygon");
+  }
+}
+
 // ---------------------------------------------------------------------------
 // sqrt3: level k is the same in one call or k calls of one level.
 
@@ -756,6 +788,28 @@ TEST(SubdivideMemory, TooLargeFailsBeforeAllocatingAndLeavesNothingBehind) {
   EXPECT_NE(huge.status.message.find("more than the 3.5 GB available"),
             std::string::npos)
       << huge.status.message;
+}
+
+TEST(SubdivideMemory, BadAllocInsideCgalBecomesAnErrorAndLeaksNothing) {
+  const Mesh_buffers cube = load("cube.off");
+  Subdivide_options o = options_for("catmull-clark", 5);  // no memory limit
+  (void)subdivide_mesh(cube, options_for("catmull-clark", 1));  // warm up
+  const std::size_t before = g_live;
+  {
+    g_fail_above = before + 200 * 1024;  // level 4 or 5 runs out
+    const Result<Mesh_buffers> r = subdivide_mesh(cube, o);
+    g_fail_above = 0;
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.status.code, Status_code::internal_error);
+    EXPECT_NE(r.status.message.find("out of memory at level "),
+              std::string::npos)
+        << r.status.message;
+    EXPECT_NE(r.status.message.find(" of catmull-clark"), std::string::npos);
+  }
+  EXPECT_EQ(g_live.load(), before) << "something stayed allocated";
+  const Result<Mesh_buffers> ok = subdivide_mesh(cube, o);
+  ASSERT_TRUE(ok.ok());
+  EXPECT_EQ(ok.value.face_count(), 6144u);
 }
 
 /// Quads of a torus, nu x nv.
