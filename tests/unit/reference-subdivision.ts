@@ -164,3 +164,63 @@ export function repeat(step: (m: PlainMesh) => PlainMesh, mesh: PlainMesh, level
   for (let i = 0; i < levels; i++) out = step(out);
   return out;
 }
+
+/**
+ * √3 (Kobbelt 2000) on a closed triangle mesh: a centre per face, old vertex
+ * = (1 - α) S + α/n Σ neighbours with α = (4 - 2 cos(2π/n)) / 9, then every
+ * old edge flipped so that it joins the centres of its two faces.
+ */
+export function sqrt3ClosedStep(mesh: PlainMesh): PlainMesh {
+  const t = topology(mesh);
+  const { points, faces } = mesh;
+  const V = points.length;
+  const centres = faces.map((face) =>
+    scale(
+      face.reduce((s, v) => add(s, points[v]), zero()),
+      1 / face.length,
+    ),
+  );
+  const moved = points.map((s, v) => {
+    const around = [...t.neighbours[v]];
+    const n = around.length;
+    const alpha = (4 - 2 * Math.cos((2 * Math.PI) / n)) / 9;
+    const sum = around.reduce((acc, w) => add(acc, points[w]), zero());
+    return add(scale(s, 1 - alpha), scale(sum, alpha / n));
+  });
+  // Triangles (a, b, c1) and (b, a, c2) around the edge a→b of face f1 become
+  // (c1, a, c2) and (c2, b, c1) once the edge is flipped.
+  const newFaces: number[][] = [];
+  faces.forEach((face, f1) => {
+    for (let k = 0; k < 3; k++) {
+      const a = face[k];
+      const b = face[(k + 1) % 3];
+      if (a > b) continue; // each edge once, from the face where it runs low → high
+      const e = t.edgeOf(a, b);
+      const f2 = e.faces[0] === f1 ? e.faces[1] : e.faces[0];
+      newFaces.push([V + f1, a, V + f2], [V + f2, b, V + f1]);
+    }
+  });
+  return { points: [...moved, ...centres], faces: newFaces };
+}
+
+/**
+ * The new points of one Doo-Sabin step (Doo & Sabin 1978): for corner i of
+ * an n-gon, Σ_j α_(j-i) p_j with α_0 = (n + 5) / 4n and
+ * α_k = (3 + 2 cos(2πk/n)) / 4n. One point per face corner.
+ */
+export function dooSabinPoints(mesh: PlainMesh): [number, number, number][] {
+  const out: [number, number, number][] = [];
+  for (const face of mesh.faces) {
+    const n = face.length;
+    for (let i = 0; i < n; i++) {
+      let p = zero();
+      for (let j = 0; j < n; j++) {
+        const k = (j - i + n) % n;
+        const alpha = k === 0 ? (n + 5) / (4 * n) : (3 + 2 * Math.cos((2 * Math.PI * k) / n)) / (4 * n);
+        p = add(p, scale(mesh.points[face[j]], alpha));
+      }
+      out.push(p);
+    }
+  }
+  return out;
+}
