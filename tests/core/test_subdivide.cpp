@@ -733,6 +733,33 @@ TEST(SubdivideErrors, UnknownSchemeAndNegativeLevels) {
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
 }
 
+TEST(SubdivideErrors, TwoValentVerticesOnlyForCatmullClark) {
+  // A "pillow": two triangles glued along all three edges. Every vertex has
+  // 2 edges; loop, sqrt3 and doo-sabin would repeat edges.
+  Mesh_buffers pillow;
+  pillow.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  pillow.face_sizes = {3, 3};
+  pillow.face_indices = {0, 1, 2, 0, 2, 1};
+  for (const std::string& scheme : {"loop", "sqrt3", "doo-sabin"}) {
+    const Result<Mesh_buffers> r =
+        subdivide_mesh(pillow, options_for(scheme, 1));
+    EXPECT_EQ(r.status.code, Status_code::invalid_mesh) << scheme;
+    EXPECT_EQ(r.status.message,
+              scheme +
+                  " cannot refine vertex 0: it has only 2 edges, so its two "
+                  "faces share two edges and the result would repeat edges "
+                  "(catmull-clark can refine it)");
+    EXPECT_EQ(predict_size(pillow, options_for(scheme, 1)).status.message,
+              r.status.message);
+  }
+  for (int level = 1; level <= 3; ++level) {
+    const Mesh_buffers cc =
+        subdivided(pillow, options_for("catmull-clark", level));
+    expect_valid(cc, "catmull-clark of the pillow");
+    EXPECT_EQ(cc.face_count(), 6u << (2 * (level - 1)));
+  }
+}
+
 TEST(SubdivideErrors, InvalidMeshIsReportedByBuildMesh) {
   Mesh_buffers bad = load("cube.off");
   bad.face_indices[0] = 99;

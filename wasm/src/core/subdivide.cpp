@@ -545,6 +545,27 @@ void collect_removed(Mesh& mesh) {
     mesh.collect_garbage();
 }
 
+/// An interior vertex of degree 2 means its two faces share two edges (a
+/// "pillow"). Splitting faces by edge points (PTQ), joining face centres
+/// across edges (sqrt3) or building a face per vertex (DQQ) then repeats an
+/// edge between the same two vertices, or makes a 2-gon: CGAL builds it, but
+/// it is no polygon mesh (it cannot be read back). PQQ handles it.
+Status check_two_valent_vertices(const Mesh& mesh,
+                                 const Subdivide_options& options) {
+  const std::string model = size_model(options);
+  if (model != "loop" && model != "sqrt3" && model != "doo-sabin")
+    return Status::success();
+  for (Mesh::Vertex_index v : mesh.vertices()) {
+    if (mesh.degree(v) != 2 || mesh.is_border(v)) continue;
+    return Status::error(
+        Status_code::invalid_mesh,
+        options.scheme + " cannot refine vertex " + std::to_string(v.idx()) +
+            ": it has only 2 edges, so its two faces share two edges and "
+            "the result would repeat edges (catmull-clark can refine it)");
+  }
+  return Status::success();
+}
+
 /// Builds and checks the mesh the steps start from: valid, and triangles for
 /// the schemes that need them (triangulated here if asked to).
 Status prepare(const Mesh_buffers& in, const Subdivide_options& options,
@@ -567,7 +588,7 @@ Status prepare(const Mesh_buffers& in, const Subdivide_options& options,
     mesh.shrink_to_fit();
     counts = counts_of(mesh);
   }
-  return Status::success();
+  return check_two_valent_vertices(mesh, options);
 }
 
 Status sqrt3_step(Mesh& mesh, int global_step) {
@@ -654,6 +675,7 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
       Mesh mesh;
       Status s = check_options(options);
       if (s.ok()) s = build_mesh(in, mesh);
+      if (s.ok()) s = check_two_valent_vertices(mesh, options);
       if (!s.ok()) {
         result.status = s;
         return result;
