@@ -4,10 +4,9 @@
 // Doo-Sabin of dqq_border_3.h, or are worked out in the test from the
 // control mesh.
 
-#include <gtest/gtest.h>
-
 #include <CGAL/Subdivision_method_3/internal/subdivision_hosts_impl_3.h>
 #include <CGAL/subdivision_method_3.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,9 +37,10 @@ Mesh load(const std::string& name) {
   std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
-  const Mesh_format format = name.size() > 4 && name.substr(name.size() - 4) == ".obj"
-                                 ? Mesh_format::obj
-                                 : Mesh_format::off;
+  const Mesh_format format =
+      name.size() > 4 && name.substr(name.size() - 4) == ".obj"
+          ? Mesh_format::obj
+          : Mesh_format::off;
   Result<Mesh_buffers> r = read_mesh(ss.str(), format);
   EXPECT_TRUE(r.ok()) << name << ": " << r.status.message;
   Mesh m;
@@ -49,10 +49,13 @@ Mesh load(const std::string& name) {
   return m;
 }
 
-Mesh_buffers load_buffers(const std::string& name) { return to_buffers(load(name)); }
+Mesh_buffers load_buffers(const std::string& name) {
+  return to_buffers(load(name));
+}
 
 /// Same counts, and vertex i of a at vertex i of b within tol (max norm).
-void expect_same_points(const Mesh& a, const Mesh& b, double tol, const std::string& what) {
+void expect_same_points(const Mesh& a, const Mesh& b, double tol,
+                        const std::string& what) {
   ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices()) << what;
   ASSERT_EQ(a.number_of_faces(), b.number_of_faces()) << what;
   ASSERT_EQ(a.number_of_edges(), b.number_of_edges()) << what;
@@ -70,7 +73,8 @@ void expect_same_points(const Mesh& a, const Mesh& b, double tol, const std::str
       }
     }
   }
-  EXPECT_LE(worst, tol) << what << ": vertex " << worst_v << " differs by " << worst;
+  EXPECT_LE(worst, tol) << what << ": vertex " << worst_v << " differs by "
+                        << worst;
 }
 
 struct Face_counts {
@@ -92,7 +96,8 @@ std::size_t border_edges(const Mesh& m) {
   return n;
 }
 
-// ---------------------------------------------------------------- quad-triangle
+// ----------------------------------------------------------------
+// quad-triangle
 
 TEST(ExtraQuadTriangle, EqualsCatmullClarkOnRegularQuadTorus) {
   const Mesh torus = load("torus-quad.off");
@@ -100,8 +105,10 @@ TEST(ExtraQuadTriangle, EqualsCatmullClarkOnRegularQuadTorus) {
   for (int levels = 1; levels <= 3; ++levels) {
     Mesh qt = torus, cc = torus;
     QuadTriangle_subdivision(qt, levels);
-    CGAL::Subdivision_method_3::CatmullClark_subdivision(cc, params::number_of_iterations(levels));
-    expect_same_points(qt, cc, 1e-12, "torus-quad level " + std::to_string(levels));
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(
+        cc, params::number_of_iterations(levels));
+    expect_same_points(qt, cc, 1e-12,
+                       "torus-quad level " + std::to_string(levels));
     EXPECT_EQ(face_counts(qt).quads, 48u << (2 * levels));
   }
 }
@@ -112,8 +119,10 @@ TEST(ExtraQuadTriangle, EqualsLoopOnRegularTriangleTorus) {
   for (int levels = 1; levels <= 3; ++levels) {
     Mesh qt = torus, loop = torus;
     QuadTriangle_subdivision(qt, levels);
-    CGAL::Subdivision_method_3::Loop_subdivision(loop, params::number_of_iterations(levels));
-    expect_same_points(qt, loop, 1e-12, "torus-tri level " + std::to_string(levels));
+    CGAL::Subdivision_method_3::Loop_subdivision(
+        loop, params::number_of_iterations(levels));
+    expect_same_points(qt, loop, 1e-12,
+                       "torus-tri level " + std::to_string(levels));
     EXPECT_EQ(face_counts(qt).triangles, 96u << (2 * levels));
   }
 }
@@ -125,17 +134,20 @@ TEST(ExtraQuadTriangle, EqualsCatmullClarkAtValence3AndOnOpenQuadMeshes) {
     const Mesh m = load(name);
     Mesh qt = m, cc = m;
     QuadTriangle_subdivision(qt, 3);
-    CGAL::Subdivision_method_3::CatmullClark_subdivision(cc, params::number_of_iterations(3));
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(
+        cc, params::number_of_iterations(3));
     expect_same_points(qt, cc, 1e-12, name);
   }
 }
 
 TEST(ExtraQuadTriangle, EqualsLoopAtValences3To5AndOnOpenTriangleMeshes) {
-  for (const char* name : {"tetrahedron.off", "octahedron.off", "icosahedron.off", "disk-tri.off"}) {
+  for (const char* name : {"tetrahedron.off", "octahedron.off",
+                           "icosahedron.off", "disk-tri.off"}) {
     const Mesh m = load(name);
     Mesh qt = m, loop = m;
     QuadTriangle_subdivision(qt, 3);
-    CGAL::Subdivision_method_3::Loop_subdivision(loop, params::number_of_iterations(3));
+    CGAL::Subdivision_method_3::Loop_subdivision(
+        loop, params::number_of_iterations(3));
     expect_same_points(qt, loop, 1e-12, name);
   }
 }
@@ -178,7 +190,8 @@ TEST(ExtraQuadTriangle, IrregularMixedVertexFollowsTheDocumentedCorrection) {
       ++ne;
       if (m.degree(m.face(h)) == 4) {
         Kernel::Vector_3 c(0, 0, 0);
-        for (auto u : CGAL::vertices_around_face(h, m)) c = c + (m.point(u) - CGAL::ORIGIN);
+        for (auto u : CGAL::vertices_around_face(h, m))
+          c = c + (m.point(u) - CGAL::ORIGIN);
         corners = corners + c / 4.0;
         ++nq;
       }
@@ -195,7 +208,8 @@ TEST(ExtraQuadTriangle, IrregularMixedVertexFollowsTheDocumentedCorrection) {
     const double lambda = (3 * lq + lt) / 4;
     const Kernel::Vector_3 expected = s + lambda * (a - s);
     const Point& got = qt.point(v);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], 1e-12) << "vertex " << v.idx();
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(got[c], expected[c], 1e-12) << "vertex " << v.idx();
   }
 }
 
@@ -233,7 +247,8 @@ TEST(ExtraQuadTriangle, FixedBoundaryKeepsTheBorderPolygon) {
       if (m.is_border(e)) {
         const auto a = m.vertex(e, 0), b = m.vertex(e, 1);
         const Point mid = CGAL::midpoint(m.point(a), m.point(b));
-        const Point& got = fixed.point(Mesh::Vertex_index(static_cast<std::uint32_t>(nv + i)));
+        const Point& got =
+            fixed.point(Mesh::Vertex_index(static_cast<std::uint32_t>(nv + i)));
         EXPECT_EQ(fixed.point(a), m.point(a)) << name;
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], mid[c], 1e-15) << name;
         if (smooth.point(a) != m.point(a)) ++moved;
@@ -249,12 +264,15 @@ TEST(ExtraQuadTriangle, FixedBoundaryKeepsTheBorderPolygon) {
 /// New points of a primal linear step, as the control mesh predicts them:
 /// old vertices stay, edge point i = midpoint of edge i, then (PQQ) face
 /// point j = centroid of face j.
-void expect_linear_step(const Mesh& m, const Mesh& r, bool face_points, const std::string& what) {
+void expect_linear_step(const Mesh& m, const Mesh& r, bool face_points,
+                        const std::string& what) {
   const std::size_t nv = m.number_of_vertices();
-  for (Mesh::Vertex_index v : m.vertices()) EXPECT_EQ(r.point(v), m.point(v)) << what;
+  for (Mesh::Vertex_index v : m.vertices())
+    EXPECT_EQ(r.point(v), m.point(v)) << what;
   std::uint32_t next = static_cast<std::uint32_t>(nv);
   for (Mesh::Edge_index e : m.edges()) {
-    const Point mid = CGAL::midpoint(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1)));
+    const Point mid =
+        CGAL::midpoint(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1)));
     const Point& got = r.point(Mesh::Vertex_index(next++));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], mid[c], 1e-15) << what;
   }
@@ -275,7 +293,8 @@ void expect_linear_step(const Mesh& m, const Mesh& r, bool face_points, const st
   EXPECT_EQ(r.number_of_vertices(), next) << what;
 }
 
-TEST(ExtraLinear, PqqKeepsVerticesAndSplitsAtMidpointsAndCentroidsOnOpenMeshes) {
+TEST(ExtraLinear,
+     PqqKeepsVerticesAndSplitsAtMidpointsAndCentroidsOnOpenMeshes) {
   for (const char* name : {"grid-open.off", "mixed-open.off", "cube.off"}) {
     const Mesh m = load(name);
     Mesh r = m;
@@ -310,8 +329,8 @@ Mesh run_custom(Mesh m, const Custom_rules& rules, int steps) {
 }
 
 TEST(ExtraCustom, PresetsPassTheirOwnChecks) {
-  for (const char* name :
-       {"catmull-clark", "loop", "doo-sabin", "sqrt3", "improved-loop", "linear"}) {
+  for (const char* name : {"catmull-clark", "loop", "doo-sabin", "sqrt3",
+                           "improved-loop", "linear"}) {
     const Custom_rules r = custom_rules_preset(name, 64);
     const Status s = check_custom_rules(r);
     EXPECT_TRUE(s.ok()) << name << ": " << s.message;
@@ -321,20 +340,24 @@ TEST(ExtraCustom, PresetsPassTheirOwnChecks) {
 
 TEST(ExtraCustom, CatmullClarkPresetEqualsCatmullClark) {
   const Custom_rules rules = custom_rules_preset("catmull-clark", 16);
-  for (const char* name : {"cube.off", "torus-quad.off", "grid-open.off", "mixed-open.off"}) {
+  for (const char* name :
+       {"cube.off", "torus-quad.off", "grid-open.off", "mixed-open.off"}) {
     const Mesh m = load(name);
     Mesh cc = m;
-    CGAL::Subdivision_method_3::CatmullClark_subdivision(cc, params::number_of_iterations(3));
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(
+        cc, params::number_of_iterations(3));
     expect_same_points(run_custom(m, rules, 3), cc, 1e-12, name);
   }
 }
 
 TEST(ExtraCustom, LoopPresetEqualsLoop) {
   const Custom_rules rules = custom_rules_preset("loop", 16);
-  for (const char* name : {"tetrahedron.off", "icosahedron.off", "torus-tri.off", "disk-tri.off"}) {
+  for (const char* name : {"tetrahedron.off", "icosahedron.off",
+                           "torus-tri.off", "disk-tri.off"}) {
     const Mesh m = load(name);
     Mesh loop = m;
-    CGAL::Subdivision_method_3::Loop_subdivision(loop, params::number_of_iterations(3));
+    CGAL::Subdivision_method_3::Loop_subdivision(
+        loop, params::number_of_iterations(3));
     expect_same_points(run_custom(m, rules, 3), loop, 1e-12, name);
   }
 }
@@ -342,10 +365,12 @@ TEST(ExtraCustom, LoopPresetEqualsLoop) {
 TEST(ExtraCustom, DooSabinPresetEqualsDooSabin) {
   const Custom_rules rules = custom_rules_preset("doo-sabin", 16);
   // Closed: CGAL's DQQ host and DooSabin_mask_3.
-  for (const char* name : {"cube.off", "tetrahedron.off", "rhombicuboctahedron.off"}) {
+  for (const char* name :
+       {"cube.off", "tetrahedron.off", "rhombicuboctahedron.off"}) {
     const Mesh m = load(name);
     Mesh ds = m;
-    CGAL::Subdivision_method_3::DooSabin_subdivision(ds, params::number_of_iterations(3));
+    CGAL::Subdivision_method_3::DooSabin_subdivision(
+        ds, params::number_of_iterations(3));
     expect_same_points(run_custom(m, rules, 3), ds, 1e-12, name);
   }
   // Open: the border-aware host of dqq_border_3.h.
@@ -359,10 +384,12 @@ TEST(ExtraCustom, DooSabinPresetEqualsDooSabin) {
 
 TEST(ExtraCustom, Sqrt3PresetEqualsSqrt3WithBorderParity) {
   const Custom_rules rules = custom_rules_preset("sqrt3", 16);
-  for (const char* name : {"icosahedron.off", "torus-tri.off", "disk-tri.off"}) {
+  for (const char* name :
+       {"icosahedron.off", "torus-tri.off", "disk-tri.off"}) {
     const Mesh m = load(name);
     Mesh s3 = m;
-    CGAL::Subdivision_method_3::Sqrt3_subdivision(s3, params::number_of_iterations(3));
+    CGAL::Subdivision_method_3::Sqrt3_subdivision(
+        s3, params::number_of_iterations(3));
     expect_same_points(run_custom(m, rules, 3), s3, 1e-12, name);
   }
 }
@@ -384,8 +411,10 @@ TEST(ExtraCustom, ImprovedLoopPresetFollowsWarrenAwayFromValence6) {
   const Mesh r = run_custom(m, rules, 1);
   for (Mesh::Vertex_index v : m.vertices()) {
     Kernel::Vector_3 ring(0, 0, 0);
-    for (auto u : CGAL::vertices_around_target(m.halfedge(v), m)) ring = ring + (m.point(u) - CGAL::ORIGIN);
-    const Kernel::Vector_3 expected = 0.625 * (m.point(v) - CGAL::ORIGIN) + (3.0 / 32.0) * ring;
+    for (auto u : CGAL::vertices_around_target(m.halfedge(v), m))
+      ring = ring + (m.point(u) - CGAL::ORIGIN);
+    const Kernel::Vector_3 expected =
+        0.625 * (m.point(v) - CGAL::ORIGIN) + (3.0 / 32.0) * ring;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.point(v)[c], expected[c], 1e-15);
   }
 }
@@ -395,18 +424,24 @@ TEST(ExtraCustom, RefusesNonFiniteWeightsNamingRuleAndValence) {
   r.vertex[5 - 3].neighbour = std::numeric_limits<double>::quiet_NaN();
   Status s = check_custom_rules(r);
   EXPECT_EQ(s.code, Status_code::invalid_argument);
-  EXPECT_EQ(s.message, "custom rules: the vertex rule at valence 5 has a weight that is not finite (nan)");
+  EXPECT_EQ(s.message,
+            "custom rules: the vertex rule at valence 5 has a weight that is "
+            "not finite (nan)");
 
   r = custom_rules_preset("doo-sabin", 8);
   r.corner[6 - 3][2] = std::numeric_limits<double>::infinity();
   s = check_custom_rules(r);
   EXPECT_EQ(s.code, Status_code::invalid_argument);
-  EXPECT_EQ(s.message, "custom rules: the corner rule at degree 6 has a weight that is not finite (inf)");
+  EXPECT_EQ(s.message,
+            "custom rules: the corner rule at degree 6 has a weight that is "
+            "not finite (inf)");
 
   r = custom_rules_preset("loop", 8);
   r.edge_wing = std::numeric_limits<double>::infinity();
   s = check_custom_rules(r);
-  EXPECT_EQ(s.message, "custom rules: the edge rule has a weight that is not finite (inf)");
+  EXPECT_EQ(
+      s.message,
+      "custom rules: the edge rule has a weight that is not finite (inf)");
 }
 
 TEST(ExtraCustom, RefusesStencilsThatDoNotSumToOne) {
@@ -414,19 +449,23 @@ TEST(ExtraCustom, RefusesStencilsThatDoNotSumToOne) {
   r.vertex[4 - 3].self += 0.1;
   Status s = check_custom_rules(r);
   EXPECT_EQ(s.code, Status_code::invalid_argument);
-  EXPECT_EQ(s.message, "custom rules: the vertex rule at valence 4 sums to 1.1, not 1");
+  EXPECT_EQ(s.message,
+            "custom rules: the vertex rule at valence 4 sums to 1.1, not 1");
 
   r = custom_rules_preset("loop", 8);
   r.edge_end = 0.4;  // 2 (0.4 + 0.125) = 1.05
-  EXPECT_EQ(check_custom_rules(r).message, "custom rules: the edge rule sums to 1.05, not 1");
+  EXPECT_EQ(check_custom_rules(r).message,
+            "custom rules: the edge rule sums to 1.05, not 1");
 
   r = custom_rules_preset("doo-sabin", 8);
   r.corner[0] = {0.5, 0.25, 0.2};
-  EXPECT_EQ(check_custom_rules(r).message, "custom rules: the corner rule at degree 3 sums to 0.95, not 1");
+  EXPECT_EQ(check_custom_rules(r).message,
+            "custom rules: the corner rule at degree 3 sums to 0.95, not 1");
 
   r = custom_rules_preset("sqrt3", 8);
   r.border_vertex = {0.2, 0.5, 0.2};
-  EXPECT_EQ(check_custom_rules(r).message, "custom rules: the border vertex rule sums to 0.9, not 1");
+  EXPECT_EQ(check_custom_rules(r).message,
+            "custom rules: the border vertex rule sums to 0.9, not 1");
 
   // Within 1e-9 is accepted.
   r = custom_rules_preset("catmull-clark", 8);
@@ -437,12 +476,14 @@ TEST(ExtraCustom, RefusesStencilsThatDoNotSumToOne) {
   r.vertex[0].face = 0.01;
   r.vertex[0].self -= 3 * 0.01;
   EXPECT_EQ(check_custom_rules(r).message,
-            "custom rules: the vertex rule at valence 3 has a face weight (0.01), which the ptq host "
+            "custom rules: the vertex rule at valence 3 has a face weight "
+            "(0.01), which the ptq host "
             "does not use; it must be 0");
 
   r.host = "bogus";
-  EXPECT_EQ(check_custom_rules(r).message,
-            "custom rules: unknown host \"bogus\" (expected pqq, ptq, dqq or sqrt3)");
+  EXPECT_EQ(
+      check_custom_rules(r).message,
+      "custom rules: unknown host \"bogus\" (expected pqq, ptq, dqq or sqrt3)");
 }
 
 TEST(ExtraCustom, RefusesTablesThatDoNotCoverTheMesh) {
@@ -450,36 +491,45 @@ TEST(ExtraCustom, RefusesTablesThatDoNotCoverTheMesh) {
   const Status s = check_custom_rules_cover(r, load("torus-tri.off"));
   EXPECT_EQ(s.code, Status_code::invalid_argument);
   EXPECT_EQ(s.message,
-            "custom rules: the vertex rule has no weights for valence 6 (the table covers valences 3 "
+            "custom rules: the vertex rule has no weights for valence 6 (the "
+            "table covers valences 3 "
             "to 5)");
   const Custom_rules d = custom_rules_preset("doo-sabin", 4);
   EXPECT_EQ(check_custom_rules_cover(d, load("mixed-open.off")).message,
-            "custom rules: the corner rule has no weights for faces of degree 5 (the table covers "
+            "custom rules: the corner rule has no weights for faces of degree "
+            "5 (the table covers "
             "degrees 3 to 4)");
   // Border vertices use the border rule, whatever their valence.
-  EXPECT_TRUE(check_custom_rules_cover(custom_rules_preset("loop", 3), load("disk-tri.off")).ok() ==
-              false);  // the centre has valence 6
-  EXPECT_TRUE(check_custom_rules_cover(custom_rules_preset("loop", 6), load("disk-tri.off")).ok());
+  EXPECT_TRUE(check_custom_rules_cover(custom_rules_preset("loop", 3),
+                                       load("disk-tri.off"))
+                  .ok() == false);  // the centre has valence 6
+  EXPECT_TRUE(check_custom_rules_cover(custom_rules_preset("loop", 6),
+                                       load("disk-tri.off"))
+                  .ok());
 }
 
-// ---------------------------------------------------------------- control edges
+// ---------------------------------------------------------------- control
+// edges
 
 /// Checks that `edges` (pairs of vertex indices of `m`) form exactly one
 /// chain of `length` edges per edge of `control`, between its two corners
 /// (the control vertices keep their indices).
-void expect_chains(const Mesh& control, const Mesh& m, const Control_edges& edges,
-                   std::size_t length) {
+void expect_chains(const Mesh& control, const Mesh& m,
+                   const Control_edges& edges, std::size_t length) {
   ASSERT_EQ(edges.size(), control.number_of_edges() * length);
   std::map<std::uint32_t, std::vector<std::uint32_t>> adj;
   for (const auto& [a, b] : edges) {
-    ASSERT_NE(m.halfedge(Mesh::Vertex_index(a), Mesh::Vertex_index(b)), Mesh::null_halfedge());
+    ASSERT_NE(m.halfedge(Mesh::Vertex_index(a), Mesh::Vertex_index(b)),
+              Mesh::null_halfedge());
     adj[a].push_back(b);
     adj[b].push_back(a);
   }
-  const std::uint32_t nv = static_cast<std::uint32_t>(control.number_of_vertices());
+  const std::uint32_t nv =
+      static_cast<std::uint32_t>(control.number_of_vertices());
   for (const auto& [v, n] : adj) {
     if (v < nv)
-      EXPECT_EQ(n.size(), control.degree(Mesh::Vertex_index(v))) << "corner " << v;
+      EXPECT_EQ(n.size(), control.degree(Mesh::Vertex_index(v)))
+          << "corner " << v;
     else
       EXPECT_EQ(n.size(), 2u) << "vertex " << v << " inside a chain";
   }
@@ -496,7 +546,9 @@ void expect_chains(const Mesh& control, const Mesh& m, const Control_edges& edge
         ++steps;
       }
       EXPECT_EQ(steps, length);
-      EXPECT_NE(control.halfedge(Mesh::Vertex_index(c), Mesh::Vertex_index(cur)), Mesh::null_halfedge())
+      EXPECT_NE(
+          control.halfedge(Mesh::Vertex_index(c), Mesh::Vertex_index(cur)),
+          Mesh::null_halfedge())
           << "chain from " << c << " ends at " << cur << ", not a neighbour";
       found.insert({std::min(c, cur), std::max(c, cur)});
     }
@@ -514,7 +566,8 @@ TEST(ExtraControlEdges, CubeCatmullClarkLevel3Has96EdgesIn12Chains) {
   Control_edges edges = ce.value;
   for (int i = 0; i < 3; ++i) {
     const auto old_end = static_cast<std::uint32_t>(m.number_of_vertices());
-    CGAL::Subdivision_method_3::CatmullClark_subdivision(m, params::number_of_iterations(1));
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(
+        m, params::number_of_iterations(1));
     edges = refine_control_edges(m, old_end, edges);
   }
   EXPECT_EQ(edges.size(), 12u * 8u);
@@ -562,10 +615,12 @@ TEST(ExtraControlEdges, GivenPairsAreCheckedAndMapped) {
   in.control_edges = {0, 7};
   r = initial_control_edges(in, cube, 0);
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
-  EXPECT_EQ(r.status.message, "control edge 0 (0, 7) is not an edge of the mesh");
+  EXPECT_EQ(r.status.message,
+            "control edge 0 (0, 7) is not an edge of the mesh");
   in.control_edges = {0, 1, 5};
-  EXPECT_EQ(initial_control_edges(in, cube, 0).status.message,
-            "control edges must come in pairs of vertex indices (got 3 numbers)");
+  EXPECT_EQ(
+      initial_control_edges(in, cube, 0).status.message,
+      "control edges must come in pairs of vertex indices (got 3 numbers)");
   in.control_edges = {0, 100};
   EXPECT_EQ(initial_control_edges(in, cube, 0).status.message,
             "control edge 0 (0, 100) names a vertex that is not in the mesh");
@@ -574,8 +629,8 @@ TEST(ExtraControlEdges, GivenPairsAreCheckedAndMapped) {
   EXPECT_TRUE(initial_control_edges(in, cube, 1).value.empty());
 }
 
-
-// ---------------------------------------------------------------- subdivide_mesh
+// ----------------------------------------------------------------
+// subdivide_mesh
 
 Mesh_buffers run(const Mesh_buffers& in, Subdivide_options o) {
   Result<Mesh_buffers> r = subdivide_mesh(in, o);
@@ -596,8 +651,8 @@ Subdivide_options custom_options(const std::string& preset, int levels) {
   return o;
 }
 
-void expect_same_buffers(const Mesh_buffers& a, const Mesh_buffers& b, double tol,
-                         const std::string& what) {
+void expect_same_buffers(const Mesh_buffers& a, const Mesh_buffers& b,
+                         double tol, const std::string& what) {
   ASSERT_EQ(a.vertex_count(), b.vertex_count()) << what;
   ASSERT_EQ(a.face_count(), b.face_count()) << what;
   EXPECT_EQ(a.face_indices, b.face_indices) << what;
@@ -609,17 +664,19 @@ void expect_same_buffers(const Mesh_buffers& a, const Mesh_buffers& b, double to
 
 TEST(ExtraSubdivide, SchemeNamesIncludeIssue4Schemes) {
   const std::vector<std::string> names = scheme_names();
-  for (const char* n : {"catmull-clark", "loop", "doo-sabin", "sqrt3", "quad-triangle", "linear",
-                        "linear-tri", "custom"})
+  for (const char* n : {"catmull-clark", "loop", "doo-sabin", "sqrt3",
+                        "quad-triangle", "linear", "linear-tri", "custom"})
     EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
 }
 
 TEST(ExtraSubdivide, QuadTriangleEqualsCatmullClarkAndLoopOnTheTori) {
-  const Mesh_buffers quad = load_buffers("torus-quad.off"), tri = load_buffers("torus-tri.off");
-  expect_same_buffers(run(quad, options("quad-triangle", 3)), run(quad, options("catmull-clark", 3)),
-                      1e-12, "torus-quad");
-  expect_same_buffers(run(tri, options("quad-triangle", 3)), run(tri, options("loop", 3)), 1e-12,
-                      "torus-tri");
+  const Mesh_buffers quad = load_buffers("torus-quad.off"),
+                     tri = load_buffers("torus-tri.off");
+  expect_same_buffers(run(quad, options("quad-triangle", 3)),
+                      run(quad, options("catmull-clark", 3)), 1e-12,
+                      "torus-quad");
+  expect_same_buffers(run(tri, options("quad-triangle", 3)),
+                      run(tri, options("loop", 3)), 1e-12, "torus-tri");
 }
 
 TEST(ExtraSubdivide, CustomPresetsEqualTheBuiltInSchemes) {
@@ -628,19 +685,20 @@ TEST(ExtraSubdivide, CustomPresetsEqualTheBuiltInSchemes) {
     const char* scheme;
     const char* mesh;
   };
-  for (const Case& c : {Case{"catmull-clark", "catmull-clark", "cube.off"},
-                        Case{"catmull-clark", "catmull-clark", "mixed-open.off"},
-                        Case{"loop", "loop", "icosahedron.off"},
-                        Case{"loop", "loop", "disk-tri.off"},
-                        Case{"doo-sabin", "doo-sabin", "cube.off"},
-                        Case{"doo-sabin", "doo-sabin", "grid-open.off"},
-                        Case{"sqrt3", "sqrt3", "icosahedron.off"},
-                        Case{"sqrt3", "sqrt3", "disk-tri.off"},
-                        Case{"linear", "linear", "mixed-open.off"}}) {
+  for (const Case& c :
+       {Case{"catmull-clark", "catmull-clark", "cube.off"},
+        Case{"catmull-clark", "catmull-clark", "mixed-open.off"},
+        Case{"loop", "loop", "icosahedron.off"},
+        Case{"loop", "loop", "disk-tri.off"},
+        Case{"doo-sabin", "doo-sabin", "cube.off"},
+        Case{"doo-sabin", "doo-sabin", "grid-open.off"},
+        Case{"sqrt3", "sqrt3", "icosahedron.off"},
+        Case{"sqrt3", "sqrt3", "disk-tri.off"},
+        Case{"linear", "linear", "mixed-open.off"}}) {
     const Mesh_buffers in = load_buffers(c.mesh);
     const std::string what = std::string(c.preset) + " on " + c.mesh;
-    expect_same_buffers(run(in, custom_options(c.preset, 3)), run(in, options(c.scheme, 3)), 1e-12,
-                        what);
+    expect_same_buffers(run(in, custom_options(c.preset, 3)),
+                        run(in, options(c.scheme, 3)), 1e-12, what);
   }
   // √3 level by level (start_level carries the border parity) equals one call.
   const Mesh_buffers disk = load_buffers("disk-tri.off");
@@ -650,7 +708,8 @@ TEST(ExtraSubdivide, CustomPresetsEqualTheBuiltInSchemes) {
     o.start_level = level;
     step = run(step, o);
   }
-  expect_same_buffers(step, run(disk, options("sqrt3", 3)), 1e-12, "sqrt3 level by level");
+  expect_same_buffers(step, run(disk, options("sqrt3", 3)), 1e-12,
+                      "sqrt3 level by level");
 }
 
 TEST(ExtraSubdivide, CustomRulesAreCheckedBeforeAnyStep) {
@@ -660,7 +719,8 @@ TEST(ExtraSubdivide, CustomRulesAreCheckedBeforeAnyStep) {
   Result<Mesh_buffers> r = subdivide_mesh(cube, o);
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
   EXPECT_EQ(r.status.message,
-            "custom rules: the vertex rule at valence 3 has a weight that is not finite (inf)");
+            "custom rules: the vertex rule at valence 3 has a weight that is "
+            "not finite (inf)");
   EXPECT_EQ(predict_size(cube, o).status.message, r.status.message);
 
   o = custom_options("loop", 1);
@@ -676,7 +736,8 @@ TEST(ExtraSubdivide, CustomRulesAreCheckedBeforeAnyStep) {
   r = subdivide_mesh(cube, o);
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
   EXPECT_EQ(r.status.message,
-            "custom rules: the vertex rule has no weights for valence 4 (the table covers valences "
+            "custom rules: the vertex rule has no weights for valence 4 (the "
+            "table covers valences "
             "3 to 3)");
 }
 
@@ -687,20 +748,25 @@ TEST(ExtraSubdivide, PredictedCountsMatchTheResult) {
   };
   Subdivide_options fixed = options("quad-triangle", 2);
   fixed.smooth_boundary = false;
-  for (const Case& c : {Case{options("quad-triangle", 3), "rhombicuboctahedron.off"},
-                        Case{options("quad-triangle", 2), "mixed-open.off"}, Case{fixed, "grid-open.off"},
-                        Case{options("linear", 3), "mixed-open.off"},
-                        Case{options("linear-tri", 3), "disk-tri.off"},
-                        Case{custom_options("doo-sabin", 2), "grid-open.off"},
-                        Case{custom_options("sqrt3", 3), "disk-tri.off"}}) {
+  for (const Case& c :
+       {Case{options("quad-triangle", 3), "rhombicuboctahedron.off"},
+        Case{options("quad-triangle", 2), "mixed-open.off"},
+        Case{fixed, "grid-open.off"},
+        Case{options("linear", 3), "mixed-open.off"},
+        Case{options("linear-tri", 3), "disk-tri.off"},
+        Case{custom_options("doo-sabin", 2), "grid-open.off"},
+        Case{custom_options("sqrt3", 3), "disk-tri.off"}}) {
     const Mesh_buffers in = load_buffers(c.mesh);
     const Result<Size_prediction> p = predict_size(in, c.o);
     ASSERT_TRUE(p.ok()) << p.status.message;
     Mesh out;
     ASSERT_TRUE(build_mesh(run(in, c.o), out).ok());
-    EXPECT_EQ(p.value.vertices, out.number_of_vertices()) << c.o.scheme << " " << c.mesh;
-    EXPECT_EQ(p.value.edges, out.number_of_edges()) << c.o.scheme << " " << c.mesh;
-    EXPECT_EQ(p.value.faces, out.number_of_faces()) << c.o.scheme << " " << c.mesh;
+    EXPECT_EQ(p.value.vertices, out.number_of_vertices())
+        << c.o.scheme << " " << c.mesh;
+    EXPECT_EQ(p.value.edges, out.number_of_edges())
+        << c.o.scheme << " " << c.mesh;
+    EXPECT_EQ(p.value.faces, out.number_of_faces())
+        << c.o.scheme << " " << c.mesh;
   }
 }
 
@@ -773,23 +839,30 @@ TEST(ExtraSubdivide, ControlEdgesOfACubeAtLevel3OfCatmullClark) {
 TEST(ExtraSubdivide, ControlEdgesOfEveryPrimalScheme) {
   const Mesh_buffers rh = load_buffers("rhombicuboctahedron.off");  // 48 edges
   const Mesh_buffers ico = load_buffers("icosahedron.off");         // 30 edges
-  EXPECT_EQ(run(rh, options("quad-triangle", 2)).control_edges.size(), 2u * 48u * 4u);
+  EXPECT_EQ(run(rh, options("quad-triangle", 2)).control_edges.size(),
+            2u * 48u * 4u);
   EXPECT_EQ(run(rh, options("linear", 2)).control_edges.size(), 2u * 48u * 4u);
-  EXPECT_EQ(run(rh, custom_options("catmull-clark", 2)).control_edges.size(), 2u * 48u * 4u);
+  EXPECT_EQ(run(rh, custom_options("catmull-clark", 2)).control_edges.size(),
+            2u * 48u * 4u);
   EXPECT_EQ(run(ico, options("loop", 2)).control_edges.size(), 2u * 30u * 4u);
-  EXPECT_EQ(run(ico, options("linear-tri", 2)).control_edges.size(), 2u * 30u * 4u);
-  EXPECT_EQ(run(ico, custom_options("loop", 2)).control_edges.size(), 2u * 30u * 4u);
+  EXPECT_EQ(run(ico, options("linear-tri", 2)).control_edges.size(),
+            2u * 30u * 4u);
+  EXPECT_EQ(run(ico, custom_options("loop", 2)).control_edges.size(),
+            2u * 30u * 4u);
   EXPECT_TRUE(run(ico, custom_options("sqrt3", 2)).control_edges.empty());
   // Triangulating a quad mesh for loop keeps only the quads' edges.
   Subdivide_options o = options("loop", 1);
   o.triangulate = true;
-  EXPECT_EQ(run(load_buffers("cube.off"), o).control_edges.size(), 2u * 12u * 2u);
+  EXPECT_EQ(run(load_buffers("cube.off"), o).control_edges.size(),
+            2u * 12u * 2u);
   // Marks that are not edges are refused.
   Mesh_buffers bad = load_buffers("cube.off");
   bad.control_edges = {0, 7};
-  const Result<Mesh_buffers> r = subdivide_mesh(bad, options("catmull-clark", 1));
+  const Result<Mesh_buffers> r =
+      subdivide_mesh(bad, options("catmull-clark", 1));
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
-  EXPECT_EQ(r.status.message, "control edge 0 (0, 7) is not an edge of the mesh");
+  EXPECT_EQ(r.status.message,
+            "control edge 0 (0, 7) is not an edge of the mesh");
 }
 
 }  // namespace

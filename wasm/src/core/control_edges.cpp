@@ -2,7 +2,6 @@
 
 #include <CGAL/boost/graph/iterator.h>
 
-
 #include "custom_rules.h"
 
 namespace subdivlab {
@@ -14,14 +13,14 @@ Mesh::Vertex_index vertex(std::uint32_t i) { return Mesh::Vertex_index(i); }
 
 bool scheme_keeps_control_edges(const Subdivide_options& o) {
   const std::string& s = o.scheme;
-  if (s == "catmull-clark" || s == "loop" || s == "quad-triangle" || s == "linear" ||
-      s == "linear-tri")
+  if (s == "catmull-clark" || s == "loop" || s == "quad-triangle" ||
+      s == "linear" || s == "linear-tri")
     return true;
   return s == "custom" && custom_rules_are_primal(o.custom);
 }
 
-Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& mesh,
-                                            int start_level) {
+Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
+                                            const Mesh& mesh, int start_level) {
   Result<Control_edges> r;
   // build_mesh numbers the vertices that faces use, in their buffer order.
   const std::size_t nv = in.vertex_count();
@@ -62,24 +61,27 @@ Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& 
   r.value.reserve(in.control_edges.size() / 2);
   for (std::size_t i = 0; i < in.control_edges.size(); i += 2) {
     const std::uint32_t a = in.control_edges[i], b = in.control_edges[i + 1];
-    const std::string name = "control edge " + std::to_string(i / 2) + " (" + std::to_string(a) +
-                             ", " + std::to_string(b) + ")";
+    const std::string name = "control edge " + std::to_string(i / 2) + " (" +
+                             std::to_string(a) + ", " + std::to_string(b) + ")";
     if (a >= nv || b >= nv || rank[a] == 0xffffffffu || rank[b] == 0xffffffffu)
       return fail(name + " names a vertex that is not in the mesh");
-    if (mesh.halfedge(vertex(rank[a]), vertex(rank[b])) == Mesh::null_halfedge())
+    if (mesh.halfedge(vertex(rank[a]), vertex(rank[b])) ==
+        Mesh::null_halfedge())
       return fail(name + " is not an edge of the mesh");
     r.value.emplace_back(rank[a], rank[b]);
   }
   return r;
 }
 
-Control_edges refine_control_edges(const Mesh& refined, std::uint32_t old_vertex_end,
+Control_edges refine_control_edges(const Mesh& refined,
+                                   std::uint32_t old_vertex_end,
                                    const Control_edges& parents) {
   Control_edges children;
   children.reserve(2 * parents.size());
   for (const auto& [a, b] : parents) {
     const Mesh::Vertex_index va = vertex(a), vb = vertex(b);
-    for (Mesh::Vertex_index m : CGAL::vertices_around_target(refined.halfedge(va), refined)) {
+    for (Mesh::Vertex_index m :
+         CGAL::vertices_around_target(refined.halfedge(va), refined)) {
       if (m.idx() < old_vertex_end) continue;
       if (refined.halfedge(m, vb) == Mesh::null_halfedge()) continue;
       children.emplace_back(a, m.idx());
@@ -90,7 +92,8 @@ Control_edges refine_control_edges(const Mesh& refined, std::uint32_t old_vertex
   return children;
 }
 
-std::vector<std::uint32_t> control_edges_to_buffers(const Mesh& mesh, const Control_edges& edges) {
+std::vector<std::uint32_t> control_edges_to_buffers(
+    const Mesh& mesh, const Control_edges& edges) {
   std::vector<std::uint32_t> number(mesh.num_vertices(), 0xffffffffu);
   std::uint32_t n = 0;
   for (Mesh::Vertex_index v : mesh.vertices()) number[v.idx()] = n++;

@@ -31,19 +31,21 @@ bool scheme_keeps_control_edges(const Subdivide_options& options);
 /// build_mesh(in, ...) succeeded (`mesh` may since have been triangulated).
 /// Fails with invalid_argument when the pairs are odd in number, out of
 /// range, or not edges of the mesh.
-Result<Control_edges> initial_control_edges(const Mesh_buffers& in, const Mesh& mesh,
-                                            int start_level);
+Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
+                                            const Mesh& mesh, int start_level);
 
 /// The children of `parents` after one primal step on `refined`, where the
 /// vertices of the coarse mesh kept their indices and every index from
 /// `old_vertex_end` on is new: the child edges of (a, b) are (a, m) and
 /// (m, b), m the new vertex adjacent to both. Parents without such an m
 /// (which a primal host never produces) are dropped.
-Control_edges refine_control_edges(const Mesh& refined, std::uint32_t old_vertex_end,
+Control_edges refine_control_edges(const Mesh& refined,
+                                   std::uint32_t old_vertex_end,
                                    const Control_edges& parents);
 
 /// The pairs as Mesh_buffers::control_edges, numbered as to_buffers numbers
 /// the vertices (iteration order).
-std::vector<std::uint32_t> control_edges_to_buffers(const Mesh& mesh, const Control_edges& edges);
+std::vector<std::uint32_t> control_edges_to_buffers(const Mesh& mesh,
+                                                    const Control_edges& edges);
 
 }  // namespace subdivlab

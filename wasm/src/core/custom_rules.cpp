@@ -28,12 +28,13 @@ std::string number(double x) {
 }
 
 /// `where` reads like "the vertex rule at valence 5".
-Status check_stencil(const std::string& where, const double* w, std::size_t count,
-                     const double* multiplicity = nullptr) {
+Status check_stencil(const std::string& where, const double* w,
+                     std::size_t count, const double* multiplicity = nullptr) {
   double sum = 0.0;
   for (std::size_t i = 0; i < count; ++i) {
     if (!std::isfinite(w[i]))
-      return refuse(where + " has a weight that is not finite (" + number(w[i]) + ")");
+      return refuse(where + " has a weight that is not finite (" +
+                    number(w[i]) + ")");
     sum += (multiplicity ? multiplicity[i] : 1.0) * w[i];
   }
   if (std::abs(sum - 1.0) > kSumTolerance)
@@ -49,32 +50,39 @@ bool known_host(const std::string& h) {
 
 Status check_custom_rules(const Custom_rules& r) {
   if (!known_host(r.host))
-    return refuse("unknown host \"" + r.host + "\" (expected pqq, ptq, dqq or sqrt3)");
+    return refuse("unknown host \"" + r.host +
+                  "\" (expected pqq, ptq, dqq or sqrt3)");
 
   if (r.host == "dqq") {
-    if (r.first_degree < 3) return refuse("the corner table must start at degree 3 or more");
-    if (r.corner.empty()) return refuse("the corner rule has no weights (empty table)");
+    if (r.first_degree < 3)
+      return refuse("the corner table must start at degree 3 or more");
+    if (r.corner.empty())
+      return refuse("the corner rule has no weights (empty table)");
     for (std::size_t i = 0; i < r.corner.size(); ++i) {
       const std::size_t k = static_cast<std::size_t>(r.first_degree) + i;
-      const std::string where = "the corner rule at degree " + std::to_string(k);
+      const std::string where =
+          "the corner rule at degree " + std::to_string(k);
       if (r.corner[i].size() != k)
-        return refuse(where + " has " + std::to_string(r.corner[i].size()) + " weights, not " +
-                      std::to_string(k));
+        return refuse(where + " has " + std::to_string(r.corner[i].size()) +
+                      " weights, not " + std::to_string(k));
       Status s = check_stencil(where, r.corner[i].data(), k);
       if (!s.ok()) return s;
     }
     return check_stencil("the border corner rule", r.border_corner.data(), 2);
   }
 
-  if (r.first_valence < 1) return refuse("the vertex table must start at valence 1 or more");
-  if (r.vertex.empty()) return refuse("the vertex rule has no weights (empty table)");
+  if (r.first_valence < 1)
+    return refuse("the vertex table must start at valence 1 or more");
+  if (r.vertex.empty())
+    return refuse("the vertex rule has no weights (empty table)");
   const bool with_faces = r.host == "pqq";
   for (std::size_t i = 0; i < r.vertex.size(); ++i) {
     const std::size_t n = static_cast<std::size_t>(r.first_valence) + i;
     const std::string where = "the vertex rule at valence " + std::to_string(n);
     const Vertex_weights& w = r.vertex[i];
     if (!with_faces && w.face != 0.0)
-      return refuse(where + " has a face weight (" + number(w.face) + "), which the " + r.host +
+      return refuse(where + " has a face weight (" + number(w.face) +
+                    "), which the " + r.host +
                     " host does not use; it must be 0");
     const double weights[3] = {w.self, w.neighbour, w.face};
     const double mult[3] = {1.0, double(n), double(n)};
@@ -99,9 +107,10 @@ Status check_custom_rules_cover(const Custom_rules& r, const Mesh& mesh) {
     for (Mesh::Face_index f : mesh.faces()) {
       const std::size_t k = mesh.degree(f);
       if (k < first || k > last)
-        return refuse("the corner rule has no weights for faces of degree " + std::to_string(k) +
-                      " (the table covers degrees " + std::to_string(first) + " to " +
-                      std::to_string(last) + ")");
+        return refuse("the corner rule has no weights for faces of degree " +
+                      std::to_string(k) + " (the table covers degrees " +
+                      std::to_string(first) + " to " + std::to_string(last) +
+                      ")");
     }
     return Status::success();
   }
@@ -111,9 +120,10 @@ Status check_custom_rules_cover(const Custom_rules& r, const Mesh& mesh) {
     if (mesh.is_border(v, /*check_all_incident_halfedges=*/true)) continue;
     const std::size_t n = mesh.degree(v);
     if (n < first || n > last)
-      return refuse("the vertex rule has no weights for valence " + std::to_string(n) +
-                    " (the table covers valences " + std::to_string(first) + " to " +
-                    std::to_string(last) + ")");
+      return refuse("the vertex rule has no weights for valence " +
+                    std::to_string(n) + " (the table covers valences " +
+                    std::to_string(first) + " to " + std::to_string(last) +
+                    ")");
   }
   return Status::success();
 }
@@ -124,13 +134,16 @@ Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
   if (max_valence < 3) max_valence = 3;
   auto for_valences = [&](auto weights) {
     r.first_valence = 3;
-    for (int n = 3; n <= max_valence; ++n) r.vertex.push_back(weights(double(n)));
+    for (int n = 3; n <= max_valence; ++n)
+      r.vertex.push_back(weights(double(n)));
   };
   if (name == "catmull-clark") {
     // CGAL's CatmullClark_mask_3: ((n-3) S + 2 R + Q) / n with R the mean edge
     // midpoint and Q the mean face point.
     r.host = "pqq";
-    for_valences([](double n) { return Vertex_weights{(n - 2) / n, 1 / (n * n), 1 / (n * n)}; });
+    for_valences([](double n) {
+      return Vertex_weights{(n - 2) / n, 1 / (n * n), 1 / (n * n)};
+    });
     r.edge_end = 0.25;
     r.edge_wing = 0.25;
   } else if (name == "loop" || name == "improved-loop") {
@@ -155,13 +168,17 @@ Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
     r.edge_end = 3.0 / 8.0;
     r.edge_wing = 1.0 / 8.0;
   } else if (name == "doo-sabin") {
-    // DooSabin_mask_3: (5/k + 1)/4 at the corner, (3 + 2 cos(2 pi j / k)) / (4k).
+    // DooSabin_mask_3: (5/k + 1)/4 at the corner, (3 + 2 cos(2 pi j / k)) /
+    // (4k).
     r.host = "dqq";
     r.first_degree = 3;
     for (int k = 3; k <= max_valence; ++k) {
       std::vector<double> w(k);
       for (int j = 0; j < k; ++j)
-        w[j] = (k == 4) ? (j == 0 ? 9.0 : j == 2 ? 1.0 : 3.0) / 16.0
+        w[j] = (k == 4) ? (j == 0   ? 9.0
+                           : j == 2 ? 1.0
+                                    : 3.0) /
+                              16.0
                : j == 0 ? (5.0 / k + 1) / 4
                         : (3 + 2 * std::cos(2 * j * pi / k)) / k / 4;
       r.corner.push_back(w);
@@ -187,7 +204,8 @@ Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
   return r;
 }
 
-void custom_subdivision_step(Mesh& mesh, const Custom_rules& rules, int level_index) {
+void custom_subdivision_step(Mesh& mesh, const Custom_rules& rules,
+                             int level_index) {
   namespace SMI = CGAL::Subdivision_method_3::internal;
   auto vpm = get(CGAL::vertex_point, mesh);
   if (rules.host == "pqq") {
@@ -200,11 +218,13 @@ void custom_subdivision_step(Mesh& mesh, const Custom_rules& rules, int level_in
     if (CGAL::is_closed(mesh))
       SMI::DQQ_1step(mesh, vpm, Table_DQQ_mask_3<Mesh>(&mesh, vpm, &rules));
     else
-      internal::DQQ_border_1step(mesh, Table_DQQ_mask_3<Mesh>(&mesh, vpm, &rules));
+      internal::DQQ_border_1step(mesh,
+                                 Table_DQQ_mask_3<Mesh>(&mesh, vpm, &rules));
   } else if (rules.host == "sqrt3") {
     // CGAL refines the border on every second step; level_index carries the
     // parity across calls, as subdivide.cpp does for sqrt3.
-    SMI::Sqrt3_1step(mesh, vpm, Table_Sqrt3_mask_3<Mesh>(&mesh, vpm, &rules), level_index % 2 == 1);
+    SMI::Sqrt3_1step(mesh, vpm, Table_Sqrt3_mask_3<Mesh>(&mesh, vpm, &rules),
+                     level_index % 2 == 1);
   }
 }
 

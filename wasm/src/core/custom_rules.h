@@ -42,8 +42,9 @@ struct Custom_rules {
   double edge_end = 0.5, edge_wing = 0.0;
 
   int first_degree = 3;  ///< degree of corner[0]
-  /// DQQ: the new point of corner c of a k-gon is sum_j corner[k - first_degree][j]
-  /// p_j, where p_0 is c's vertex and p_j follows p_{j-1} around the face.
+  /// DQQ: the new point of corner c of a k-gon is sum_j corner[k -
+  /// first_degree][j] p_j, where p_0 is c's vertex and p_j follows p_{j-1}
+  /// around the face.
   std::vector<std::vector<double>> corner;
 
   /// Border vertex {previous, self, next} (PQQ, PTQ, Sqrt3).
@@ -91,6 +92,7 @@ Custom_rules custom_rules_preset(const std::string& name, int max_valence = 64);
 /// mesh before the step (Sqrt3 refines the border when it is odd).
 /// Preconditions: check_custom_rules and check_custom_rules_cover succeeded;
 /// triangles for ptq and sqrt3.
-void custom_subdivision_step(Mesh& mesh, const Custom_rules& rules, int level_index);
+void custom_subdivision_step(Mesh& mesh, const Custom_rules& rules,
+                             int level_index);
 
 }  // namespace subdivlab

@@ -18,16 +18,20 @@ namespace subdivlab {
 /// CGAL::Linear_mask_3 with a border rule: border edge point at the
 /// midpoint, border vertex unchanged. Models PQQMask_3 and PTQMask_3.
 template <class PolygonMesh,
-          class VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>
-class Linear_border_mask_3 : public CGAL::Linear_mask_3<PolygonMesh, VertexPointMap> {
+          class VertexPointMap = typename boost::property_map<
+              PolygonMesh, CGAL::vertex_point_t>::type>
+class Linear_border_mask_3
+    : public CGAL::Linear_mask_3<PolygonMesh, VertexPointMap> {
   typedef CGAL::Linear_mask_3<PolygonMesh, VertexPointMap> Base;
 
  public:
   typedef typename Base::halfedge_descriptor halfedge_descriptor;
   typedef typename Base::Point Point;
 
-  explicit Linear_border_mask_3(PolygonMesh* pmesh) : Base(pmesh, get(CGAL::vertex_point, *pmesh)) {}
-  Linear_border_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap) : Base(pmesh, vpmap) {}
+  explicit Linear_border_mask_3(PolygonMesh* pmesh)
+      : Base(pmesh, get(CGAL::vertex_point, *pmesh)) {}
+  Linear_border_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap)
+      : Base(pmesh, vpmap) {}
 
   /// `edge` is the non-border halfedge of a border edge; `vpt` is the new
   /// point of its target.
@@ -41,7 +45,8 @@ class Linear_border_mask_3 : public CGAL::Linear_mask_3<PolygonMesh, VertexPoint
 /// edge midpoints and face centroids. Any polygon mesh, open or closed.
 template <class PolygonMesh>
 void Linear_subdivision(PolygonMesh& pmesh) {
-  CGAL::Subdivision_method_3::PQQ(pmesh, Linear_border_mask_3<PolygonMesh>(&pmesh),
+  CGAL::Subdivision_method_3::PQQ(pmesh,
+                                  Linear_border_mask_3<PolygonMesh>(&pmesh),
                                   CGAL::parameters::number_of_iterations(1));
 }
 
@@ -49,7 +54,8 @@ void Linear_subdivision(PolygonMesh& pmesh) {
 /// edge midpoints), positions unchanged. Precondition: all faces triangles.
 template <class PolygonMesh>
 void Linear_triangle_subdivision(PolygonMesh& pmesh) {
-  CGAL::Subdivision_method_3::PTQ(pmesh, Linear_border_mask_3<PolygonMesh>(&pmesh),
+  CGAL::Subdivision_method_3::PTQ(pmesh,
+                                  Linear_border_mask_3<PolygonMesh>(&pmesh),
                                   CGAL::parameters::number_of_iterations(1));
 }
 

@@ -13,8 +13,8 @@
 //    them; control edges and the reduction tests rely on that.
 //  - averaging (mask vertex_node / border_node, read on the refined mesh):
 //    an interior vertex v with ne edges and nq incident quads goes to
-//        A = alpha (v + 1/2 sum(edge neighbours) + 1/4 sum(opposite quad corners)),
-//        alpha = 1 / (1 + ne/2 + nq/4),
+//        A = alpha (v + 1/2 sum(edge neighbours) + 1/4 sum(opposite quad
+//        corners)), alpha = 1 / (1 + ne/2 + nq/4),
 //    then the correction  v' = v + lambda (A - v).
 //
 // The correction. lambda = 1 at regular configurations: 4 quads, 6 triangles,
@@ -78,12 +78,15 @@ inline double quad_triangle_relaxation(std::size_t nq, std::size_t nt) {
 /// mesh); vertex_node and border_node are the averaging (read on the refined
 /// mesh, before any vertex has moved).
 template <class PolygonMesh,
-          class VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>
+          class VertexPointMap = typename boost::property_map<
+              PolygonMesh, CGAL::vertex_point_t>::type>
 class Quad_triangle_mask_3 {
  public:
   typedef PolygonMesh Mesh;
-  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef
+      typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor
+      halfedge_descriptor;
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
@@ -95,15 +98,19 @@ class Quad_triangle_mask_3 {
   bool smooth_boundary;
 
   Quad_triangle_mask_3(Mesh* pmesh, bool smooth_boundary = true)
-      : pmesh(pmesh), vpmap(get(CGAL::vertex_point, *pmesh)), smooth_boundary(smooth_boundary) {}
-  Quad_triangle_mask_3(Mesh* pmesh, VertexPointMap vpmap, bool smooth_boundary = true)
+      : pmesh(pmesh),
+        vpmap(get(CGAL::vertex_point, *pmesh)),
+        smooth_boundary(smooth_boundary) {}
+  Quad_triangle_mask_3(Mesh* pmesh, VertexPointMap vpmap,
+                       bool smooth_boundary = true)
       : pmesh(pmesh), vpmap(vpmap), smooth_boundary(smooth_boundary) {}
 
   /// Refinement: centroid of a face that is not a triangle.
   void face_node(face_descriptor f, Point& pt) {
     Vector s(0, 0, 0);
     int n = 0;
-    for (vertex_descriptor v : vertices_around_face(halfedge(f, *pmesh), *pmesh)) {
+    for (vertex_descriptor v :
+         vertices_around_face(halfedge(f, *pmesh), *pmesh)) {
       s = s + (get(vpmap, v) - CGAL::ORIGIN);
       ++n;
     }
@@ -112,7 +119,8 @@ class Quad_triangle_mask_3 {
 
   /// Refinement: midpoint of an edge.
   void edge_node(halfedge_descriptor h, Point& pt) {
-    pt = CGAL::midpoint(get(vpmap, source(h, *pmesh)), get(vpmap, target(h, *pmesh)));
+    pt = CGAL::midpoint(get(vpmap, source(h, *pmesh)),
+                        get(vpmap, target(h, *pmesh)));
   }
 
   /// Averaging of an interior vertex of the refined mesh.
@@ -128,7 +136,8 @@ class Quad_triangle_mask_3 {
       // target of next(next(h)).
       const halfedge_descriptor h2 = next(next(h, m), m);
       if (next(next(h2, m), m) == h) {
-        opposite_corners = opposite_corners + (get(vpmap, target(h2, m)) - CGAL::ORIGIN);
+        opposite_corners =
+            opposite_corners + (get(vpmap, target(h2, m)) - CGAL::ORIGIN);
         ++nq;
       }
     }
@@ -149,7 +158,8 @@ class Quad_triangle_mask_3 {
     }
     const Vector prev = get(vpmap, source(h, m)) - CGAL::ORIGIN;
     const Vector next_v = get(vpmap, target(next(h, m), m)) - CGAL::ORIGIN;
-    pt = CGAL::ORIGIN + (prev / FT(4) + (p - CGAL::ORIGIN) / FT(2) + next_v / FT(4));
+    pt = CGAL::ORIGIN +
+         (prev / FT(4) + (p - CGAL::ORIGIN) / FT(2) + next_v / FT(4));
   }
 };
 
@@ -162,16 +172,20 @@ class Quad_triangle_mask_3 {
 template <class Poly, class VertexPointMap, class Mask>
 void PQT_1step(Poly& p, VertexPointMap vpm, Mask mask) {
   namespace SM = CGAL::Subdivision_method_3::internal;
-  typedef typename boost::graph_traits<Poly>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<Poly>::halfedge_descriptor halfedge_descriptor;
+  typedef
+      typename boost::graph_traits<Poly>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Poly>::halfedge_descriptor
+      halfedge_descriptor;
   typedef typename boost::graph_traits<Poly>::edge_descriptor edge_descriptor;
   typedef typename boost::graph_traits<Poly>::face_descriptor face_descriptor;
-  typedef CGAL::Halfedge_around_face_circulator<Poly> Halfedge_around_facet_circulator;
+  typedef CGAL::Halfedge_around_face_circulator<Poly>
+      Halfedge_around_facet_circulator;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
   const std::vector<face_descriptor> p_faces(faces(p).first, faces(p).second);
   const std::vector<edge_descriptor> p_edges(edges(p).first, edges(p).second);
-  const std::size_t num_v = num_vertices(p), num_e = p_edges.size(), num_f = p_faces.size();
+  const std::size_t num_v = num_vertices(p), num_e = p_edges.size(),
+                    num_f = p_faces.size();
 
   // Refinement points, computed on the control mesh.
   std::vector<Point> edge_points(num_e), face_points(num_f);
@@ -187,7 +201,8 @@ void PQT_1step(Poly& p, VertexPointMap vpm, Mask mask) {
       ++face_points_count;
     }
   }
-  for (std::size_t i = 0; i < num_e; ++i) mask.edge_node(halfedge(p_edges[i], p), edge_points[i]);
+  for (std::size_t i = 0; i < num_e; ++i)
+    mask.edge_node(halfedge(p_edges[i], p), edge_points[i]);
 
   SM::call_reserve(p, num_v + num_e + face_points_count, new_edges, new_faces);
 
@@ -229,7 +244,8 @@ void PQT_1step(Poly& p, VertexPointMap vpm, Mask mask) {
   }
 
   // Averaging: all new positions from the refined positions, then written.
-  const std::vector<vertex_descriptor> r_vertices(vertices(p).first, vertices(p).second);
+  const std::vector<vertex_descriptor> r_vertices(vertices(p).first,
+                                                  vertices(p).second);
   std::vector<Point> averaged(r_vertices.size());
   for (std::size_t i = 0; i < r_vertices.size(); ++i) {
     const vertex_descriptor v = r_vertices[i];
@@ -244,7 +260,8 @@ void PQT_1step(Poly& p, VertexPointMap vpm, Mask mask) {
     else
       mask.vertex_node(v, averaged[i]);
   }
-  for (std::size_t i = 0; i < r_vertices.size(); ++i) put(vpm, r_vertices[i], averaged[i]);
+  for (std::size_t i = 0; i < r_vertices.size(); ++i)
+    put(vpm, r_vertices[i], averaged[i]);
 
   CGAL_postcondition(CGAL::is_valid_polygon_mesh(p));
 }
@@ -254,7 +271,8 @@ void PQT_1step(Poly& p, VertexPointMap vpm, Mask mask) {
 /// `smooth_boundary`, else stay on the control border polygon.
 /// Precondition: a valid polygon mesh without garbage.
 template <class PolygonMesh>
-void QuadTriangle_subdivision(PolygonMesh& pmesh, int steps = 1, bool smooth_boundary = true) {
+void QuadTriangle_subdivision(PolygonMesh& pmesh, int steps = 1,
+                              bool smooth_boundary = true) {
   auto vpm = get(CGAL::vertex_point, pmesh);
   Quad_triangle_mask_3<PolygonMesh> mask(&pmesh, vpm, smooth_boundary);
   for (int i = 0; i < steps; ++i) PQT_1step(pmesh, vpm, mask);

@@ -32,8 +32,10 @@ template <class PolygonMesh, class VertexPointMap>
 class Table_mask_base_3 {
  public:
   typedef PolygonMesh Mesh;
-  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef
+      typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor
+      halfedge_descriptor;
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
@@ -44,7 +46,8 @@ class Table_mask_base_3 {
   VertexPointMap vpmap;
   const Custom_rules* rules;
 
-  Table_mask_base_3(Mesh* pmesh, VertexPointMap vpmap, const Custom_rules* rules)
+  Table_mask_base_3(Mesh* pmesh, VertexPointMap vpmap,
+                    const Custom_rules* rules)
       : pmesh(pmesh), vpmap(vpmap), rules(rules) {}
 
  protected:
@@ -57,7 +60,8 @@ class Table_mask_base_3 {
   Vector centroid(face_descriptor f) const {
     Vector s(0, 0, 0);
     int n = 0;
-    for (vertex_descriptor v : vertices_around_face(halfedge(f, *pmesh), *pmesh)) {
+    for (vertex_descriptor v :
+         vertices_around_face(halfedge(f, *pmesh), *pmesh)) {
       s = s + at(v);
       ++n;
     }
@@ -86,7 +90,8 @@ class Table_mask_base_3 {
     const Mesh& m = *pmesh;
     const halfedge_descriptor bh = opposite(h, m);
     const auto& w = rules->border_vertex;
-    return w[0] * at(source(prev(bh, m), m)) + w[1] * at(target(h, m)) + w[2] * at(source(h, m));
+    return w[0] * at(source(prev(bh, m), m)) + w[1] * at(target(h, m)) +
+           w[2] * at(source(h, m));
   }
 
   /// Border edge rule for the border edge of h (chain order c, b, a, d).
@@ -94,8 +99,8 @@ class Table_mask_base_3 {
     const Mesh& m = *pmesh;
     const halfedge_descriptor bh = opposite(h, m);
     const auto& w = rules->border_edge;
-    return w[0] * at(source(prev(bh, m), m)) + w[1] * at(target(h, m)) + w[2] * at(source(h, m)) +
-           w[3] * at(target(next(bh, m), m));
+    return w[0] * at(source(prev(bh, m), m)) + w[1] * at(target(h, m)) +
+           w[2] * at(source(h, m)) + w[3] * at(target(next(bh, m), m));
   }
 };
 
@@ -103,7 +108,8 @@ class Table_mask_base_3 {
 /// point = edge_end (a + b) + edge_wing (f1 + f2); vertex rule from the
 /// valence table with the incident face centroids.
 template <class PolygonMesh,
-          class VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>
+          class VertexPointMap = typename boost::property_map<
+              PolygonMesh, CGAL::vertex_point_t>::type>
 class Table_PQQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
   typedef Table_mask_base_3<PolygonMesh, VertexPointMap> Base;
 
@@ -113,19 +119,26 @@ class Table_PQQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
   using typename Base::Point;
   using typename Base::vertex_descriptor;
 
-  Table_PQQ_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap, const Custom_rules* rules)
+  Table_PQQ_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap,
+                   const Custom_rules* rules)
       : Base(pmesh, vpmap, rules) {}
 
-  void face_node(face_descriptor f, Point& pt) { pt = CGAL::ORIGIN + this->centroid(f); }
+  void face_node(face_descriptor f, Point& pt) {
+    pt = CGAL::ORIGIN + this->centroid(f);
+  }
 
   void edge_node(halfedge_descriptor h, Point& pt) {
     const PolygonMesh& m = *this->pmesh;
-    pt = CGAL::ORIGIN + (this->rules->edge_end * (this->at(source(h, m)) + this->at(target(h, m))) +
-                         this->rules->edge_wing *
-                             (this->centroid(face(h, m)) + this->centroid(face(opposite(h, m), m))));
+    pt = CGAL::ORIGIN +
+         (this->rules->edge_end *
+              (this->at(source(h, m)) + this->at(target(h, m))) +
+          this->rules->edge_wing * (this->centroid(face(h, m)) +
+                                    this->centroid(face(opposite(h, m), m))));
   }
 
-  void vertex_node(vertex_descriptor v, Point& pt) { pt = CGAL::ORIGIN + this->vertex_rule(v, true); }
+  void vertex_node(vertex_descriptor v, Point& pt) {
+    pt = CGAL::ORIGIN + this->vertex_rule(v, true);
+  }
 
   void border_node(halfedge_descriptor h, Point& ept, Point& vpt) {
     ept = CGAL::ORIGIN + this->border_edge_rule(h);
@@ -137,7 +150,8 @@ class Table_PQQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
 /// edge_wing (c + d) with c, d the vertices opposite the edge; vertex rule
 /// from the valence table.
 template <class PolygonMesh,
-          class VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>
+          class VertexPointMap = typename boost::property_map<
+              PolygonMesh, CGAL::vertex_point_t>::type>
 class Table_PTQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
   typedef Table_mask_base_3<PolygonMesh, VertexPointMap> Base;
 
@@ -146,18 +160,22 @@ class Table_PTQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
   using typename Base::Point;
   using typename Base::vertex_descriptor;
 
-  Table_PTQ_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap, const Custom_rules* rules)
+  Table_PTQ_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap,
+                   const Custom_rules* rules)
       : Base(pmesh, vpmap, rules) {}
 
   void edge_node(halfedge_descriptor h, Point& pt) {
     const PolygonMesh& m = *this->pmesh;
-    pt = CGAL::ORIGIN +
-         (this->rules->edge_end * (this->at(source(h, m)) + this->at(target(h, m))) +
-          this->rules->edge_wing *
-              (this->at(target(next(h, m), m)) + this->at(target(next(opposite(h, m), m), m))));
+    pt = CGAL::ORIGIN + (this->rules->edge_end *
+                             (this->at(source(h, m)) + this->at(target(h, m))) +
+                         this->rules->edge_wing *
+                             (this->at(target(next(h, m), m)) +
+                              this->at(target(next(opposite(h, m), m), m))));
   }
 
-  void vertex_node(vertex_descriptor v, Point& pt) { pt = CGAL::ORIGIN + this->vertex_rule(v, false); }
+  void vertex_node(vertex_descriptor v, Point& pt) {
+    pt = CGAL::ORIGIN + this->vertex_rule(v, false);
+  }
 
   void border_node(halfedge_descriptor h, Point& ept, Point& vpt) {
     ept = CGAL::ORIGIN + this->border_edge_rule(h);
@@ -170,7 +188,8 @@ class Table_PTQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
 /// Border (for DQQ_border_1step): the corner points on a border edge are
 /// border_corner[0] own vertex + border_corner[1] other end.
 template <class PolygonMesh,
-          class VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>
+          class VertexPointMap = typename boost::property_map<
+              PolygonMesh, CGAL::vertex_point_t>::type>
 class Table_DQQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
   typedef Table_mask_base_3<PolygonMesh, VertexPointMap> Base;
 
@@ -179,7 +198,8 @@ class Table_DQQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
   using typename Base::Point;
   using typename Base::Vector;
 
-  Table_DQQ_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap, const Custom_rules* rules)
+  Table_DQQ_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap,
+                   const Custom_rules* rules)
       : Base(pmesh, vpmap, rules) {}
 
   void corner_node(halfedge_descriptor he, Point& pt) {
@@ -190,10 +210,11 @@ class Table_DQQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
       h = next(h, m);
       ++k;
     } while (h != he);
-    const std::vector<double>& w =
-        this->rules->corner.at(k - static_cast<std::size_t>(this->rules->first_degree));
+    const std::vector<double>& w = this->rules->corner.at(
+        k - static_cast<std::size_t>(this->rules->first_degree));
     Vector s(0, 0, 0);
-    for (std::size_t j = 0; j < k; ++j, h = next(h, m)) s = s + w[j] * this->at(target(h, m));
+    for (std::size_t j = 0; j < k; ++j, h = next(h, m))
+      s = s + w[j] * this->at(target(h, m));
     pt = CGAL::ORIGIN + s;
   }
 
@@ -211,26 +232,34 @@ class Table_DQQ_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
 /// edge s -> t (chain order prev_s, s, t, next_t) are border_edge and its
 /// mirror image, and s moves by border_vertex.
 template <class PolygonMesh,
-          class VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>
-class Table_Sqrt3_mask_3 : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
+          class VertexPointMap = typename boost::property_map<
+              PolygonMesh, CGAL::vertex_point_t>::type>
+class Table_Sqrt3_mask_3
+    : public Table_mask_base_3<PolygonMesh, VertexPointMap> {
   typedef Table_mask_base_3<PolygonMesh, VertexPointMap> Base;
 
  public:
   using typename Base::face_descriptor;
   using typename Base::halfedge_descriptor;
   using typename Base::Point;
-  using typename Base::vertex_descriptor;
   using typename Base::Vector;
+  using typename Base::vertex_descriptor;
 
-  Table_Sqrt3_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap, const Custom_rules* rules)
+  Table_Sqrt3_mask_3(PolygonMesh* pmesh, VertexPointMap vpmap,
+                     const Custom_rules* rules)
       : Base(pmesh, vpmap, rules) {}
 
-  void face_node(face_descriptor f, Point& pt) { pt = CGAL::ORIGIN + this->centroid(f); }
+  void face_node(face_descriptor f, Point& pt) {
+    pt = CGAL::ORIGIN + this->centroid(f);
+  }
 
-  void vertex_node(vertex_descriptor v, Point& pt) { pt = CGAL::ORIGIN + this->vertex_rule(v, false); }
+  void vertex_node(vertex_descriptor v, Point& pt) {
+    pt = CGAL::ORIGIN + this->vertex_rule(v, false);
+  }
 
   /// `hd` is the non-border halfedge of a border edge, as in Sqrt3_mask_3.
-  void border_node(halfedge_descriptor hd, Point& ept1, Point& ept2, Point& vpt) {
+  void border_node(halfedge_descriptor hd, Point& ept1, Point& ept2,
+                   Point& vpt) {
     const PolygonMesh& m = *this->pmesh;
     const halfedge_descriptor bhd = opposite(hd, m);
     const Vector prev_s = this->at(source(prev(bhd, m), m));
