@@ -45,6 +45,7 @@ describe('subdiv CLI', () => {
       'triangles',
       'quads',
       'otherFaces',
+      'controlEdges',
       'ms',
     ]);
     const { ms, ...counts } = stats;
@@ -61,6 +62,7 @@ describe('subdiv CLI', () => {
       triangles: 0,
       quads: 768,
       otherFaces: 0,
+      controlEdges: 384, // the 96 control edges, each split in 4
     });
     expect(typeof ms).toBe('number');
     expect(ms).toBeGreaterThanOrEqual(0);

@@ -1,7 +1,7 @@
 /** Each scheme through the WASM core: exact counts, invariants, and points against the published rules. */
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
-import type { Mesh, MeshFacts, SchemeName } from '../../web/core/mesh';
+import type { CgalSchemeName, Mesh, MeshFacts, SchemeName } from '../../web/core/mesh';
 import { meshFacts, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
 import { catmullClarkStep, loopStep, repeat } from './reference-subdivision';
@@ -25,7 +25,7 @@ function countsOf(mesh: Mesh): Counts {
 }
 
 /** One step's counts on a closed mesh, from the scheme's connectivity rule. */
-const closedStep: Record<SchemeName, (c: Counts) => Counts> = {
+const closedStep: Record<CgalSchemeName, (c: Counts) => Counts> = {
   // Catmull-Clark: every corner of every face becomes a quad.
   'catmull-clark': (c) => ({
     vertices: c.vertices + c.edges + c.faces,
@@ -56,7 +56,7 @@ const closedStep: Record<SchemeName, (c: Counts) => Counts> = {
   }),
 };
 
-const closedCases: [SchemeName, string][] = [
+const closedCases: [CgalSchemeName, string][] = [
   ['catmull-clark', 'cube.off'],
   ['catmull-clark', 'torus-quad.off'],
   ['catmull-clark', 'rhombicuboctahedron.off'],

@@ -110,7 +110,57 @@ std::size_t available_heap_bytes() {
   return used < max ? max - used : 1;
 }
 
-/// Reads { scheme, levels, startLevel, triangulate, memoryLimitBytes }.
+/// Reads the tables of web/core/rule-set.ts's CompiledRules into `rules`
+/// (shape only; check_custom_rules judges the numbers).
+Status from_js_rules(const val& js, Custom_rules& rules) {
+  const auto bad = [](const std::string& what) {
+    return Status::error(Status_code::invalid_argument, "Option rules: " + what + ".");
+  };
+  if (!js["host"].isString()) return bad("host must be a string");
+  rules.host = js["host"].as<std::string>();
+  const auto numbers = [&js](const char* key) {
+    const val v = js[key];
+    if (v.isUndefined() || v.isNull()) return std::vector<double>{};
+    return emscripten::convertJSArrayToNumberVector<double>(v);
+  };
+  const auto fixed = [&](const char* key, double* out, std::size_t n) {
+    const std::vector<double> v = numbers(key);
+    if (v.empty()) return true;  // keep the default
+    if (v.size() != n) return false;
+    std::copy(v.begin(), v.end(), out);
+    return true;
+  };
+  const std::vector<double> vertex = numbers("vertex");
+  if (vertex.size() % 3 != 0) return bad("vertex must hold 3 numbers per valence");
+  rules.first_valence = js["firstValence"].isNumber() ? js["firstValence"].as<int>() : 3;
+  rules.vertex.clear();
+  for (std::size_t i = 0; i < vertex.size(); i += 3)
+    rules.vertex.push_back({vertex[i], vertex[i + 1], vertex[i + 2]});
+  double edge[2] = {rules.edge_end, rules.edge_wing};
+  if (!fixed("edge", edge, 2)) return bad("edge must hold 2 numbers");
+  rules.edge_end = edge[0];
+  rules.edge_wing = edge[1];
+  rules.first_degree = js["firstDegree"].isNumber() ? js["firstDegree"].as<int>() : 3;
+  if (rules.first_degree < 3 || rules.first_degree > 1 << 20)
+    return bad("firstDegree must be 3 or more");
+  const std::vector<double> corner = numbers("corner");
+  rules.corner.clear();
+  std::size_t at = 0;
+  for (std::size_t k = static_cast<std::size_t>(rules.first_degree); at < corner.size(); ++k) {
+    if (at + k > corner.size()) return bad("corner must hold k numbers for each degree k");
+    rules.corner.emplace_back(corner.begin() + at, corner.begin() + at + k);
+    at += k;
+  }
+  if (!fixed("borderVertex", rules.border_vertex.data(), 3))
+    return bad("borderVertex must hold 3 numbers");
+  if (!fixed("borderEdge", rules.border_edge.data(), 4)) return bad("borderEdge must hold 4 numbers");
+  if (!fixed("borderCorner", rules.border_corner.data(), 2))
+    return bad("borderCorner must hold 2 numbers");
+  return Status::success();
+}
+
+/// Reads { scheme, levels, startLevel, triangulate, memoryLimitBytes,
+/// smoothBoundary, rules }.
 Status from_js_options(const val& js, Subdivide_options& options) {
   if (!js.isUndefined() && !js.isNull()) {
     const val scheme = js["scheme"];
@@ -137,6 +187,13 @@ Status from_js_options(const val& js, Subdivide_options& options) {
                            "Option startLevel must be an integer.");
     const val triangulate = js["triangulate"];
     if (!triangulate.isUndefined()) options.triangulate = triangulate.as<bool>();
+    const val smooth = js["smoothBoundary"];
+    if (!smooth.isUndefined()) options.smooth_boundary = smooth.as<bool>();
+    const val rules = js["rules"];
+    if (!rules.isUndefined() && !rules.isNull()) {
+      const Status s = from_js_rules(rules, options.custom);
+      if (!s.ok()) return s;
+    }
     const val limit = js["memoryLimitBytes"];
     if (limit.isNumber() && limit.as<double>() > 0)
       options.memory_limit_bytes = static_cast<std::size_t>(

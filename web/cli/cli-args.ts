@@ -3,13 +3,20 @@ import type { MeshFormat } from '../core/mesh';
 
 /** The usage text printed by --help and on bad usage. */
 export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|OUTPUT.obj] [--stats]
+              [--rule RULES.json] [--fixed-boundary]
 
   INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
-  --scheme S       catmull-clark (default), loop, doo-sabin or sqrt3
+  --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
+                   linear-tri or custom
   --levels N       number of subdivision steps, 0 or more (default 1; 0 = load, check, convert)
-  --triangulate    triangulate first when the scheme needs triangles (loop, sqrt3)
+  --triangulate    triangulate first when the scheme needs triangles (loop, sqrt3, linear-tri,
+                   custom on the ptq or sqrt3 host)
+  --rule F         the rule set of --scheme custom, a JSON file (see public/rules/); implies
+                   --scheme custom
+  --fixed-boundary quad-triangle: keep border vertices on the control border polygon
   -o, --output F   write the result to F, as OFF or OBJ by its extension
   --stats          print the result's facts and the subdivision time as one JSON object
+                   (with controlEdges, the marked control-mesh edges, for primal schemes)
   -h, --help       show this text
 
 Without -o and --stats the result is written to stdout as OFF.
@@ -21,6 +28,10 @@ export interface CliArgs {
   scheme: string;
   levels: number;
   triangulate: boolean;
+  /** --rule: path of a rule file (scheme custom). */
+  rule: string | null;
+  /** --fixed-boundary. */
+  fixedBoundary: boolean;
   output: { path: string; format: MeshFormat } | null;
   stats: boolean;
   help: boolean;
@@ -51,7 +62,17 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const { values, positionals } = parsed;
   const help = values.help === true;
   if (help) {
-    return { input: '', scheme: '', levels: 0, triangulate: false, output: null, stats: false, help };
+    return {
+      input: '',
+      scheme: '',
+      levels: 0,
+      triangulate: false,
+      rule: null,
+      fixedBoundary: false,
+      output: null,
+      stats: false,
+      help,
+    };
   }
   if (positionals.length !== 1) {
     throw new UsageError(positionals.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
@@ -59,11 +80,19 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const levelsText = values.levels ?? '1';
   if (!/^\d+$/.test(levelsText)) throw new UsageError(`--levels must be an integer 0 or more, not "${levelsText}"`);
   const levels = Number(levelsText);
+  const rule = values.rule ?? null;
+  if (rule !== null && values.scheme !== undefined && values.scheme !== 'custom') {
+    throw new UsageError(`--rule gives the rules of --scheme custom, not of ${values.scheme}`);
+  }
+  const scheme = values.scheme ?? (rule !== null ? 'custom' : 'catmull-clark');
+  if (scheme === 'custom' && rule === null) throw new UsageError('--scheme custom needs --rule FILE.json');
   return {
     input: positionals[0],
-    scheme: values.scheme ?? 'catmull-clark',
+    scheme,
     levels,
     triangulate: values.triangulate === true,
+    rule,
+    fixedBoundary: values['fixed-boundary'] === true,
     output: values.output === undefined ? null : { path: values.output, format: outputFormat(values.output) },
     stats: values.stats === true,
     help,
@@ -79,6 +108,8 @@ function parse(argv: string[]) {
       scheme: { type: 'string' },
       levels: { type: 'string' },
       triangulate: { type: 'boolean' },
+      rule: { type: 'string' },
+      'fixed-boundary': { type: 'boolean' },
       output: { type: 'string', short: 'o' },
       stats: { type: 'boolean' },
       help: { type: 'boolean', short: 'h' },

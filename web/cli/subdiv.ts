@@ -7,6 +7,7 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
 import type { Mesh, MeshFormat, SchemeName } from '../core/mesh';
+import { parseRuleSetText, type RuleSet } from '../core/rule-set';
 import { exportMesh, formatFromFileName, meshFacts, parseMesh, schemeNames, subdivide } from '../core/subdiv-core';
 import { SubdivError } from '../core/subdiv-error';
 import { type CliArgs, parseCliArgs, USAGE, UsageError } from './cli-args';
@@ -21,6 +22,9 @@ const processIo: CliIo = {
   stdout: (text) => process.stdout.write(text),
   stderr: (text) => process.stderr.write(text),
 };
+
+/** Schemes whose results carry control edges (custom: on the pqq and ptq hosts). */
+const PRIMAL = new Set(['catmull-clark', 'loop', 'quad-triangle', 'linear', 'linear-tri']);
 
 /** Bad input: reported as one `error:` line, exit status 1. */
 class InputError extends Error {}
@@ -58,16 +62,38 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (!schemes.includes(args.scheme)) {
     throw new UsageError(`unknown scheme "${args.scheme}" (known: ${schemes.join(', ')})`);
   }
+  let rules: RuleSet | undefined;
+  if (args.rule !== null) {
+    const ruleText = readInput(args.rule);
+    try {
+      rules = parseRuleSetText(ruleText);
+    } catch (error) {
+      if (error instanceof SubdivError) throw new InputError(`${args.rule}: ${error.message}`);
+      throw error;
+    }
+  }
   const text = readInput(args.input);
   let result: Mesh;
   let ms: number;
   try {
     const mesh = parseMesh(text, inputFormat(args.input, text));
     const start = performance.now();
-    result = subdivide(mesh, { scheme: args.scheme as SchemeName, levels: args.levels, triangulate: args.triangulate });
+    result = subdivide(mesh, {
+      scheme: args.scheme as SchemeName,
+      levels: args.levels,
+      triangulate: args.triangulate,
+      smoothBoundary: !args.fixedBoundary,
+      rules,
+    });
     ms = performance.now() - start;
   } catch (error) {
-    if (error instanceof SubdivError) throw new InputError(locate(args.input, error));
+    if (error instanceof SubdivError) {
+      // Rule values are judged by the core: name the rule file, not the mesh.
+      if (args.rule !== null && error.message.startsWith('custom rules:')) {
+        throw new InputError(`${args.rule}: ${error.message}`);
+      }
+      throw new InputError(locate(args.input, error));
+    }
     throw error;
   }
   if (args.output) {
@@ -80,7 +106,7 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   }
   if (args.stats) {
     const f = meshFacts(result);
-    const stats = {
+    const stats: Record<string, number | boolean> = {
       vertices: f.vertices,
       edges: f.edges,
       faces: f.faces,
@@ -92,8 +118,10 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
       triangles: f.triangles,
       quads: f.quads,
       otherFaces: f.otherFaces,
-      ms: Math.round(ms * 1000) / 1000,
     };
+    // Primal schemes carry the control mesh's edges (0 levels: all of them).
+    if (result.controlEdges.length > 0 || PRIMAL.has(args.scheme)) stats.controlEdges = f.controlEdges;
+    stats.ms = Math.round(ms * 1000) / 1000;
     io.stdout(`${JSON.stringify(stats)}\n`);
   }
   if (!args.output && !args.stats) io.stdout(exportMesh(result, 'off'));

@@ -1,3 +1,5 @@
+import type { RuleSet } from './rule-set';
+
 /**
  * The one mesh type that crosses between the WASM core, the worker and the
  * viewer: flat typed arrays owned by JS (copied out of the WASM heap once).
@@ -16,7 +18,11 @@ export interface Mesh {
 
 export type MeshFormat = 'off' | 'obj';
 
-export type SchemeName = 'catmull-clark' | 'loop' | 'doo-sabin' | 'sqrt3';
+/** CGAL's four schemes (issue 2). */
+export type CgalSchemeName = 'catmull-clark' | 'loop' | 'doo-sabin' | 'sqrt3';
+
+/** Every scheme the core knows; issue 4 adds quad-triangle, linear, linear-tri and custom (needs `rules`). */
+export type SchemeName = CgalSchemeName | 'quad-triangle' | 'linear' | 'linear-tri' | 'custom';
 
 export interface SubdivideOptions {
   scheme: SchemeName;
@@ -28,6 +34,10 @@ export interface SubdivideOptions {
   triangulate?: boolean;
   /** Memory the result may take, in bytes; 0/undefined = the module's default. */
   memoryLimitBytes?: number;
+  /** quad-triangle: border vertices follow the cubic B-spline rule (true, default) or stay on the control border polygon. */
+  smoothBoundary?: boolean;
+  /** custom: the host and weights (rule-set.ts); required for scheme 'custom'. */
+  rules?: RuleSet;
 }
 
 export interface SizePrediction {

@@ -7,6 +7,7 @@
  */
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
+import { type CompiledRules, compileLimitsFor, compileRuleSet } from './rule-set';
 import { SubdivError, type SubdivErrorCode } from './subdiv-error';
 
 /** Where the `.wasm` comes from. Without either field the browser fetches the file next to the glue. */
@@ -18,14 +19,16 @@ export interface InitSource {
 }
 
 type RawFailure = { ok: false; code: SubdivErrorCode; message: string; line: number };
+/** Options as bindings.cpp reads them: custom rules already evaluated into tables. */
+type CoreOptions = Omit<SubdivideOptions, 'rules'> & { rules?: CompiledRules };
 type RawResult<T> = ({ ok: true } & T) | RawFailure;
 
 /** What bindings.cpp registers; every call returns a result object, never throws. */
 interface CoreModule {
   read_mesh(text: string, format: string): RawResult<{ mesh: Mesh }>;
   write_mesh(mesh: Mesh, format: string): RawResult<{ text: string }>;
-  subdivide(mesh: Mesh, options: SubdivideOptions): RawResult<{ mesh: Mesh }>;
-  predict_size(mesh: Mesh, options: SubdivideOptions): RawResult<{ prediction: SizePrediction }>;
+  subdivide(mesh: Mesh, options: CoreOptions): RawResult<{ mesh: Mesh }>;
+  predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   scheme_names(): RawResult<{ names: string[] }>;
   heap_in_use(): number;
@@ -101,12 +104,26 @@ export function exportMesh(mesh: Mesh, format: MeshFormat): string {
  * Without `memoryLimitBytes` the limit is what the WebAssembly heap can still take.
  */
 export function subdivide(mesh: Mesh, options: SubdivideOptions): Mesh {
-  return unwrap(module().subdivide(mesh, options)).mesh;
+  return unwrap(module().subdivide(mesh, coreOptions(mesh, options))).mesh;
+}
+
+/**
+ * The options as the core takes them: `rules` evaluated into tables large
+ * enough for `mesh` (valences and degrees 3..max(64, what the mesh has)).
+ */
+function coreOptions(mesh: Mesh, options: SubdivideOptions): CoreOptions {
+  const { rules, ...rest } = options;
+  if (options.scheme === 'custom' && rules === undefined) {
+    throw new SubdivError('invalid_argument', 'scheme custom needs a rule set (option rules)');
+  }
+  if (rules === undefined || options.scheme !== 'custom') return rest;
+  const limits = compileLimitsFor(mesh.faceSizes, mesh.faceIndices, Math.floor(mesh.positions.length / 3));
+  return { ...rest, rules: compileRuleSet(rules, limits) };
 }
 
 /** Counts and peak heap bytes predicted for `subdivide(mesh, options)`, without subdividing. */
 export function predictSize(mesh: Mesh, options: SubdivideOptions): SizePrediction {
-  return unwrap(module().predict_size(mesh, options)).prediction;
+  return unwrap(module().predict_size(mesh, coreOptions(mesh, options))).prediction;
 }
 
 /** Vertices, edges, faces, components, boundaries, genus, face kinds, bounding box. */
