@@ -806,13 +806,19 @@ TEST(SubdivideMemory, TooLargeFailsBeforeAllocatingAndLeavesNothingBehind) {
   const Result<Mesh_buffers> ok = subdivide_mesh(cube, o);
   ASSERT_TRUE(ok.ok());
   EXPECT_EQ(ok.value.face_count(), 6144u);
-  // With WebAssembly's default limit, 20 levels stop at a level that would
-  // not fit, without trying it.
+  // 20 levels stop at the first level that would not fit, without trying
+  // it: level 8 (393216 faces) fits in 100 MB, level 9 does not.
   o.levels = 20;
-  o.memory_limit_bytes = std::size_t{7} << 29;  // 3.5 GB
+  o.memory_limit_bytes = std::size_t{100} << 20;
   const Result<Mesh_buffers> huge = subdivide_mesh(cube, o);
   EXPECT_EQ(huge.status.code, Status_code::too_large);
-  EXPECT_NE(huge.status.message.find("more than the 3.5 GB available"),
+  EXPECT_EQ(huge.status.message.rfind("level 9 of catmull-clark would need "
+                                      "about ",
+                                      0),
+            0u)
+      << huge.status.message;
+  EXPECT_NE(huge.status.message.find("(predicted 1.57 M vertices, 1.57 M "
+                                     "faces), more than the 100 MB available"),
             std::string::npos)
       << huge.status.message;
 }
