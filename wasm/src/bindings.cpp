@@ -4,12 +4,11 @@
 // instance. Every export returns a plain object:
 //   { ok: true, ... }  or  { ok: false, code, message, line }.
 // Mesh arrays leave the heap as copies (memory growth detaches any view).
+#include <CGAL/assertions.h>
 #include <emscripten/bind.h>
 #include <emscripten/heap.h>
 #include <emscripten/val.h>
 #include <malloc.h>
-
-#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <array>
@@ -95,9 +94,9 @@ bool parse_format(const std::string& name, Mesh_format& format) {
 }
 
 Status unknown_format(const std::string& name) {
-  return Status::error(Status_code::invalid_argument,
-                       "Unknown mesh format \"" + name +
-                           "\"; expected \"off\" or \"obj\".");
+  return Status::error(
+      Status_code::invalid_argument,
+      "Unknown mesh format \"" + name + "\"; expected \"off\" or \"obj\".");
 }
 
 /// Bytes the heap can still give: the address space left to grow into plus
@@ -114,7 +113,8 @@ std::size_t available_heap_bytes() {
 /// (shape only; check_custom_rules judges the numbers).
 Status from_js_rules(const val& js, Custom_rules& rules) {
   const auto bad = [](const std::string& what) {
-    return Status::error(Status_code::invalid_argument, "Option rules: " + what + ".");
+    return Status::error(Status_code::invalid_argument,
+                         "Option rules: " + what + ".");
   };
   if (!js["host"].isString()) return bad("host must be a string");
   rules.host = js["host"].as<std::string>();
@@ -131,8 +131,10 @@ Status from_js_rules(const val& js, Custom_rules& rules) {
     return true;
   };
   const std::vector<double> vertex = numbers("vertex");
-  if (vertex.size() % 3 != 0) return bad("vertex must hold 3 numbers per valence");
-  rules.first_valence = js["firstValence"].isNumber() ? js["firstValence"].as<int>() : 3;
+  if (vertex.size() % 3 != 0)
+    return bad("vertex must hold 3 numbers per valence");
+  rules.first_valence =
+      js["firstValence"].isNumber() ? js["firstValence"].as<int>() : 3;
   rules.vertex.clear();
   for (std::size_t i = 0; i < vertex.size(); i += 3)
     rules.vertex.push_back({vertex[i], vertex[i + 1], vertex[i + 2]});
@@ -140,20 +142,24 @@ Status from_js_rules(const val& js, Custom_rules& rules) {
   if (!fixed("edge", edge, 2)) return bad("edge must hold 2 numbers");
   rules.edge_end = edge[0];
   rules.edge_wing = edge[1];
-  rules.first_degree = js["firstDegree"].isNumber() ? js["firstDegree"].as<int>() : 3;
+  rules.first_degree =
+      js["firstDegree"].isNumber() ? js["firstDegree"].as<int>() : 3;
   if (rules.first_degree < 3 || rules.first_degree > 1 << 20)
     return bad("firstDegree must be 3 or more");
   const std::vector<double> corner = numbers("corner");
   rules.corner.clear();
   std::size_t at = 0;
-  for (std::size_t k = static_cast<std::size_t>(rules.first_degree); at < corner.size(); ++k) {
-    if (at + k > corner.size()) return bad("corner must hold k numbers for each degree k");
+  for (std::size_t k = static_cast<std::size_t>(rules.first_degree);
+       at < corner.size(); ++k) {
+    if (at + k > corner.size())
+      return bad("corner must hold k numbers for each degree k");
     rules.corner.emplace_back(corner.begin() + at, corner.begin() + at + k);
     at += k;
   }
   if (!fixed("borderVertex", rules.border_vertex.data(), 3))
     return bad("borderVertex must hold 3 numbers");
-  if (!fixed("borderEdge", rules.border_edge.data(), 4)) return bad("borderEdge must hold 4 numbers");
+  if (!fixed("borderEdge", rules.border_edge.data(), 4))
+    return bad("borderEdge must hold 4 numbers");
   if (!fixed("borderCorner", rules.border_corner.data(), 2))
     return bad("borderCorner must hold 2 numbers");
   return Status::success();
@@ -164,7 +170,8 @@ Status from_js_rules(const val& js, Custom_rules& rules) {
 Status from_js_options(const val& js, Subdivide_options& options) {
   if (!js.isUndefined() && !js.isNull()) {
     const val scheme = js["scheme"];
-    if (scheme.isString()) options.scheme = scheme.as<std::string>();
+    if (scheme.isString())
+      options.scheme = scheme.as<std::string>();
     else if (!scheme.isUndefined())
       return Status::error(Status_code::invalid_argument,
                            "Option scheme must be a string.");
@@ -186,7 +193,8 @@ Status from_js_options(const val& js, Subdivide_options& options) {
       return Status::error(Status_code::invalid_argument,
                            "Option startLevel must be an integer.");
     const val triangulate = js["triangulate"];
-    if (!triangulate.isUndefined()) options.triangulate = triangulate.as<bool>();
+    if (!triangulate.isUndefined())
+      options.triangulate = triangulate.as<bool>();
     const val smooth = js["smoothBoundary"];
     if (!smooth.isUndefined()) options.smooth_boundary = smooth.as<bool>();
     const val rules = js["rules"];
@@ -196,8 +204,8 @@ Status from_js_options(const val& js, Subdivide_options& options) {
     }
     const val limit = js["memoryLimitBytes"];
     if (limit.isNumber() && limit.as<double>() > 0)
-      options.memory_limit_bytes = static_cast<std::size_t>(
-          std::min(limit.as<double>(), 1.8e19));
+      options.memory_limit_bytes =
+          static_cast<std::size_t>(std::min(limit.as<double>(), 1.8e19));
   }
   const std::size_t available = available_heap_bytes();
   if (options.memory_limit_bytes == 0 || options.memory_limit_bytes > available)
@@ -215,8 +223,9 @@ val guarded(Body body) {
         Status_code::too_large,
         "Out of memory: the WebAssembly heap could not grow any further."));
   } catch (const std::exception& e) {
-    return to_js_status(Status::error(
-        Status_code::internal_error, std::string("Internal error: ") + e.what()));
+    return to_js_status(
+        Status::error(Status_code::internal_error,
+                      std::string("Internal error: ") + e.what()));
   } catch (...) {
     return to_js_status(Status::error(Status_code::internal_error,
                                       "Internal error: unknown exception."));
