@@ -45,20 +45,22 @@ const counts = /OFF\s+(\d+)\s+(\d+)/.exec(readFileSync(meshPath, 'utf8').slice(0
 const size = counts ? ` (${counts[1]} vertices, ${counts[2]} faces)` : '';
 console.log(`[bench] ${basename(meshPath)}${size}, ${runs} timed runs per scheme`);
 
-console.log('[bench] native ...');
-const native = run(join(buildDir, 'subdiv_bench_native'), [meshPath, String(runs), ...SCHEMES])
-  .trim()
-  .split('\n')
-  .map((line) => JSON.parse(line));
-
-console.log('[bench] WASM in Node ...');
 const wasmBundle = join(root, 'build', 'cli', 'bench-wasm.mjs');
 if (!existsSync(wasmBundle)) {
   console.error('error: build/cli/bench-wasm.mjs missing; run node scripts/setup.mjs');
   process.exit(1);
 }
 const { benchWasm } = await import(pathToFileURL(wasmBundle).href);
-const wasm = await benchWasm(meshPath, runs, SCHEMES);
+
+// Scheme by scheme, native then WASM, so that a change in the machine's load
+// during the run affects both sides of a ratio alike.
+const native = [];
+const wasm = [];
+for (const scheme of SCHEMES) {
+  console.log(`[bench] ${scheme}: native, then WASM in Node`);
+  native.push(JSON.parse(run(join(buildDir, 'subdiv_bench_native'), [meshPath, String(runs), scheme]).trim()));
+  wasm.push(...(await benchWasm(meshPath, runs, [scheme])));
+}
 
 const rows = SCHEMES.map((scheme) => {
   const n = native.find((r) => r.scheme === scheme);
