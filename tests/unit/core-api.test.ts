@@ -152,6 +152,13 @@ describe('predictSize', () => {
       expect([p.vertices, p.edges, p.faces]).toEqual([f.vertices, f.edges, f.faces]);
       expect(p.peakBytes).toBeGreaterThan(0);
     }
+    // Without a limit, the step is checked against what the 4 GB heap can still take.
+    const limit = predictSize(torus, { scheme: 'catmull-clark', levels: 1 }).memoryLimitBytes ?? 0;
+    expect(limit).toBeGreaterThan(3 * 2 ** 30);
+    expect(limit).toBeLessThan(4 * 2 ** 30 - heapBytesInUse());
+    expect(predictSize(torus, { scheme: 'catmull-clark', levels: 1, memoryLimitBytes: 12345 }).memoryLimitBytes).toBe(
+      12345,
+    );
     const ico = loadFixture('icosahedron.off');
     const p = predictSize(ico, { scheme: 'loop', levels: 4 });
     expect(p.faces).toBe(20 * 4 ** 4);

@@ -46,6 +46,11 @@ export interface SizePrediction {
   faces: number;
   /** Peak bytes the last step needs in the WASM heap. */
   peakBytes: number;
+  /**
+   * The limit a step is checked against: the caller's memoryLimitBytes, or
+   * what the WASM heap can still take (4 GB minus what is in use, minus a margin).
+   */
+  memoryLimitBytes?: number;
 }
 
 export interface MeshFacts {
