@@ -865,5 +865,37 @@ TEST(ExtraSubdivide, ControlEdgesOfEveryPrimalScheme) {
             "control edge 0 (0, 7) is not an edge of the mesh");
 }
 
+TEST(ExtraSubdivide, QuadTriangleRefusesOnlyTwoValentVerticesBetweenTriangles) {
+  // Two triangles glued along all three edges: PTQ-style splitting would
+  // join the same two midpoints in both faces.
+  Mesh_buffers pillow;
+  pillow.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  pillow.face_sizes = {3, 3};
+  pillow.face_indices = {0, 1, 2, 0, 2, 1};
+  const Result<Mesh_buffers> r =
+      subdivide_mesh(pillow, options("quad-triangle", 1));
+  EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
+  EXPECT_EQ(
+      r.status.message,
+      "quad-triangle cannot refine vertex 0: it has only 2 edges, so its two "
+      "faces share two edges and the result would repeat edges "
+      "(catmull-clark can refine it)");
+  // A triangle and a quad, or two quads, at such a vertex are fine.
+  Mesh_buffers mixed;
+  mixed.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1};
+  mixed.face_sizes = {3, 4};
+  mixed.face_indices = {0, 1, 2, 1, 0, 2, 3};
+  Mesh_buffers quads;
+  quads.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  quads.face_sizes = {4, 4};
+  quads.face_indices = {0, 1, 2, 3, 0, 3, 2, 1};
+  for (const Mesh_buffers* in : {&mixed, &quads}) {
+    const Mesh_buffers out = run(*in, options("quad-triangle", 3));
+    Mesh m;
+    const Status s = build_mesh(out, m);
+    EXPECT_TRUE(s.ok()) << s.message;
+  }
+}
+
 }  // namespace
 }  // namespace subdivlab

@@ -553,10 +553,20 @@ void collect_removed(Mesh& mesh) {
 Status check_two_valent_vertices(const Mesh& mesh,
                                  const Subdivide_options& options) {
   const std::string model = size_model(options);
-  if (model != "loop" && model != "sqrt3" && model != "doo-sabin")
+  // quad-triangle splits triangles as PTQ does, quads as PQQ: only a vertex
+  // between two triangles repeats an edge.
+  const bool two_triangles_only = options.scheme == "quad-triangle";
+  if (model != "loop" && model != "sqrt3" && model != "doo-sabin" &&
+      !two_triangles_only)
     return Status::success();
   for (Mesh::Vertex_index v : mesh.vertices()) {
     if (mesh.degree(v) != 2 || mesh.is_border(v)) continue;
+    if (two_triangles_only) {
+      const Mesh::Halfedge_index h = mesh.halfedge(v);
+      if (mesh.degree(mesh.face(h)) != 3 ||
+          mesh.degree(mesh.face(mesh.opposite(mesh.next(h)))) != 3)
+        continue;
+    }
     return Status::error(
         Status_code::invalid_mesh,
         options.scheme + " cannot refine vertex " + std::to_string(v.idx()) +
