@@ -5,6 +5,8 @@
 //   { ok: true, ... }  or  { ok: false, code, message, line }.
 // Mesh arrays leave the heap as copies (memory growth detaches any view).
 #include <CGAL/assertions.h>
+#include <CGAL/assertions_behaviour.h>
+#include <CGAL/exceptions.h>
 #include <emscripten/bind.h>
 #include <emscripten/heap.h>
 #include <emscripten/val.h>
@@ -213,7 +215,19 @@ Status from_js_options(const val& js, Subdivide_options& options) {
   return Status::success();
 }
 
-/// Runs `body`, turning anything thrown into an internal_error object.
+/// `text` on one line (messages end up in one CLI error line).
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+/// CGAL reports a failed check through its error handler (which prints to
+/// stderr) and then throws; the exception carries everything, so stay quiet.
+void silent_cgal_failure(const char*, const char*, const char*, int,
+                         const char*) {}
+
+/// Runs `body`, turning anything thrown into an error object.
 template <class Body>
 val guarded(Body body) {
   try {
@@ -222,10 +236,15 @@ val guarded(Body body) {
     return to_js_status(Status::error(
         Status_code::too_large,
         "Out of memory: the WebAssembly heap could not grow any further."));
+  } catch (const CGAL::Failure_exception& e) {
+    std::string what = "Internal error: CGAL check failed: " + e.expression();
+    if (!e.message().empty()) what += " (" + e.message() + ")";
+    return to_js_status(
+        Status::error(Status_code::internal_error, one_line(what)));
   } catch (const std::exception& e) {
     return to_js_status(
         Status::error(Status_code::internal_error,
-                      std::string("Internal error: ") + e.what()));
+                      one_line(std::string("Internal error: ") + e.what())));
   } catch (...) {
     return to_js_status(Status::error(Status_code::internal_error,
                                       "Internal error: unknown exception."));
@@ -365,6 +384,8 @@ double js_heap_in_use() {
 }  // namespace subdivlab
 
 EMSCRIPTEN_BINDINGS(subdivlab) {
+  CGAL::set_error_handler(&subdivlab::silent_cgal_failure);
+  CGAL::set_warning_handler(&subdivlab::silent_cgal_failure);
   emscripten::function("read_mesh", &subdivlab::js_read_mesh);
   emscripten::function("write_mesh", &subdivlab::js_write_mesh);
   emscripten::function("subdivide", &subdivlab::js_subdivide);
