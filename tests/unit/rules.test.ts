@@ -21,7 +21,7 @@ import {
   type RuleSet,
   ruleSetToText,
 } from '../../web/core/rule-set';
-import { meshFacts, predictSize, schemeNames, subdivide } from '../../web/core/subdiv-core';
+import { checkRules, meshFacts, predictSize, schemeNames, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
 import { FIXTURES_DIR, loadFixture } from './test-helpers';
 
@@ -290,6 +290,19 @@ describe('new schemes through the WASM core', () => {
     expectRefused(
       () => subdivide(cube, { scheme: 'custom', levels: 1 }),
       'scheme custom needs a rule set (option rules)',
+    );
+    // checkRules: the same verdicts without a mesh (the rules panel's feedback).
+    expectRefused(() => checkRules(bad), 'custom rules: the vertex rule at valence 3 sums to 1.1, not 1');
+    expectRefused(
+      () => checkRules(nan),
+      'custom rules: the vertex rule at valence 5 has a weight that is not finite (nan)',
+    );
+    expectRefused(() => checkRules(ds), 'custom rules: the corner rule at degree 3 sums to 1.02, not 1');
+    const warren: RuleSet = { ...preset('loop'), vertex: { self: '5/8', neighbour: '3/(8*n)' } };
+    for (const rules of [...RULE_PRESETS.map(preset), warren]) expect(() => checkRules(rules)).not.toThrow();
+    expectRefused(
+      () => checkRules({ ...preset('loop'), border: { vertex: ['1/8', '3/4', 'sqrt(-1)'] } }),
+      'custom rules: the border vertex rule has a weight that is not finite (nan)',
     );
     // The module keeps working.
     expect(meshFacts(subdivide(cube, { scheme: 'custom', levels: 1, rules: preset('linear') })).faces).toBe(24);

@@ -343,6 +343,18 @@ val js_facts(const val& mesh) {
   });
 }
 
+/// Checks a rule set's tables (finite weights, stencils summing to 1)
+/// without a mesh: the rules panel's instant feedback.
+val js_check_rules(const val& js_rules) {
+  return guarded([&] {
+    Custom_rules rules;
+    Status s = from_js_rules(js_rules, rules);
+    if (s.ok()) s = check_custom_rules(rules);
+    if (!s.ok()) return to_js_status(s);
+    return ok_object();
+  });
+}
+
 val js_scheme_names() {
   return guarded([] {
     val names = val::array();
@@ -392,6 +404,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("predict_size", &subdivlab::js_predict_size);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("scheme_names", &subdivlab::js_scheme_names);
+  emscripten::function("check_rules", &subdivlab::js_check_rules);
   emscripten::function("heap_in_use", &subdivlab::js_heap_in_use);
   emscripten::function("throw_for_test", &subdivlab::js_throw_for_test);
 }

@@ -98,6 +98,7 @@ const FIRST = 3;
 export const DEFAULT_MAX_VALENCE = 64;
 /** Largest table the compiler builds (the core checks coverage anyway). */
 const MAX_TABLE = 4096;
+const MAX_DEGREE_TABLE = 1024;
 
 function refuse(where: string, message: string): never {
   throw new SubdivError('invalid_argument', `rule set: ${where}: ${message}`);
@@ -271,7 +272,8 @@ export function compileRuleSet(input: RuleSet, limits: CompileLimits = {}): Comp
   const rules = parseRuleSet(input);
   const clamp = (x: number | undefined) => Math.min(MAX_TABLE, Math.max(FIRST, Math.floor(x ?? DEFAULT_MAX_VALENCE)));
   const maxValence = clamp(limits.maxValence);
-  const maxDegree = clamp(limits.maxDegree);
+  // A k-gon's row has k weights: keep the corner table to about 500k numbers.
+  const maxDegree = Math.min(clamp(limits.maxDegree), MAX_DEGREE_TABLE);
   const h = rules.host;
   const compiled: CompiledRules = {
     host: h,

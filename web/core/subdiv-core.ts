@@ -7,7 +7,7 @@
  */
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
-import { type CompiledRules, compileLimitsFor, compileRuleSet } from './rule-set';
+import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
 import { SubdivError, type SubdivErrorCode } from './subdiv-error';
 
 /** Where the `.wasm` comes from. Without either field the browser fetches the file next to the glue. */
@@ -31,6 +31,7 @@ interface CoreModule {
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   scheme_names(): RawResult<{ names: string[] }>;
+  check_rules(rules: CompiledRules): RawResult<object>;
   heap_in_use(): number;
   throw_for_test(kind: string): RawFailure;
 }
@@ -129,6 +130,17 @@ export function predictSize(mesh: Mesh, options: SubdivideOptions): SizePredicti
 /** Vertices, edges, faces, components, boundaries, genus, face kinds, bounding box. */
 export function meshFacts(mesh: Mesh): MeshFacts {
   return unwrap(module().facts(mesh)).facts;
+}
+
+/**
+ * Checks a rule set as the core will when subdividing, without a mesh: its
+ * formulas parse, and, evaluated for valences and degrees 3..64 (or
+ * `limits`), every weight is finite and every stencil sums to 1. Throws the
+ * same SubdivError as subdivide would ('invalid_argument', naming the rule
+ * and the valence or degree).
+ */
+export function checkRules(rules: RuleSet, limits?: CompileLimits): void {
+  unwrap(module().check_rules(compileRuleSet(rules, limits)));
 }
 
 /** Scheme names the core knows, in display order. */
