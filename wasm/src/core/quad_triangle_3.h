@@ -1,7 +1,7 @@
 // Quad/Triangle subdivision (Stam & Loop, "Quad/Triangle Subdivision",
-// Computer Graphics Forum 22(1), 2003; Levin, "Polynomial generation and
-// quasi-interpolation in stationary non-uniform subdivision", 2003) written as
-// a CGAL Subdivision_method_3 host (connectivity) and mask (geometry).
+// Computer Graphics Forum 22(1), 2003; A. Levin & D. Levin's 2003 analysis
+// of the regular quad/triangle boundary) written as a CGAL
+// Subdivision_method_3 host (connectivity) and mask (geometry).
 //
 // One step is a linear refinement followed by one averaging pass:
 //  - refinement (host PQT_1step): every edge gets its midpoint; a triangle is
