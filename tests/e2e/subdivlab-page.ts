@@ -146,6 +146,68 @@ export class SubdivLabPage {
     return download;
   }
 
+  /** Opens a sample from the gallery and waits until it is loaded. */
+  async openSample(id: string, name: string): Promise<SubdivLabTestState> {
+    await this.byTestId('gallery').locator('summary').click();
+    await this.byTestId(`gallery.${id}`).click();
+    await expect(this.byTestId('facts.model')).toHaveText(name);
+    return this.idle();
+  }
+
+  /** Vertex positions of the shown level (x0 y0 z0 x1 ...), from the test API. */
+  async positions(): Promise<number[]> {
+    return this.page.evaluate(() => window.__subdivlab?.positions() ?? []);
+  }
+
+  /** The rules panel's field of the weight at `path` (`edge.end`, `vertex.self.6`, `border.vertex.0`). */
+  weight(path: string): Locator {
+    return this.byTestId(`rules.weight.${path}`);
+  }
+
+  /** Waits until the rules panel says its rules are applied and `level` is computed again (no step running). */
+  async rulesApplied(level: number): Promise<SubdivLabTestState> {
+    await expect(this.byTestId('rules.status')).toHaveText('These rules are applied.');
+    await this.page.waitForFunction((k) => {
+      const s = window.__subdivlab?.state();
+      return s !== undefined && !s.busy && (s.level === k || s.lastError !== null);
+    }, level);
+    const state = await this.state();
+    expect(state.lastError, 'recomputing with the rules failed').toBeNull();
+    return state;
+  }
+
+  /** Picks a preset in the rules panel and waits until it is applied. */
+  async chooseRulePreset(name: string, ruleName: string): Promise<SubdivLabTestState> {
+    const { level } = await this.state();
+    await this.byTestId('rules.preset').selectOption(name);
+    await expect.poll(async () => (await this.state()).customRules?.name).toBe(ruleName);
+    return this.rulesApplied(level);
+  }
+
+  /** Presses Apply in the rules panel (once the live check allows it) and waits for the recomputed levels. */
+  async applyRules(): Promise<SubdivLabTestState> {
+    const { level } = await this.state();
+    await expect(this.byTestId('rules.apply')).toBeEnabled();
+    await this.byTestId('rules.apply').click();
+    return this.rulesApplied(Math.max(1, level));
+  }
+
+  /**
+   * Screenshot of one panel into test-results/screenshots/NAME.png. The window
+   * grows for the shot when the panel is taller than its scrolling column, then
+   * gets its size back.
+   */
+  async panelSnapshot(testId: string, name: string): Promise<void> {
+    const size = this.page.viewportSize() ?? { width: 1024, height: 700 };
+    const panel = this.byTestId(testId);
+    const height = await panel.evaluate((e) => e.scrollHeight);
+    if (height + 200 > size.height) await this.page.setViewportSize({ width: size.width, height: height + 300 });
+    await panel.scrollIntoViewIfNeeded();
+    await this.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    await panel.screenshot({ path: `test-results/screenshots/${name}.png` });
+    await this.page.setViewportSize(size);
+  }
+
   /** Screenshot of the page into test-results/ (looked at by people, not compared). */
   async snapshot(name: string): Promise<void> {
     await this.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));

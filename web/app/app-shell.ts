@@ -1,9 +1,10 @@
 /**
  * The SubdivLab page: one SubdivViewer composed with the panels (samples,
- * scheme, levels, display, facts, export), the drop zone, the error banner,
- * the progress overlay and the keyboard shortcuts. Every failure ends in
+ * scheme, custom rules, levels, display, facts, export), the drop zone, the
+ * error banner, the progress overlay and the keyboard shortcuts. Every failure ends in
  * {@link AppShell.showError}, the one place errors are shown.
  */
+import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
 import { nextRenderMode } from '../render/render-mode';
@@ -18,14 +19,16 @@ import { FactsPanel } from '../ui/facts-panel';
 import { createGallery } from '../ui/gallery';
 import { LevelPanel } from '../ui/level-panel';
 import { ProgressOverlay } from '../ui/progress-overlay';
+import { hostNeedsTriangles, RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { installShortcuts, SHORTCUTS } from '../ui/shortcuts';
 import { exportFileName, saveBlob } from './file-names';
 import { formatBytes } from './memory-budget';
 import { fetchMesh, LoadError, type MeshText, readFile } from './mesh-source';
+import { checkRulesInCore } from './rules-check';
 import { SAMPLES } from './samples';
 import { schemeInfo } from './scheme-info';
-import { type LargeStepInfo, SubdivViewer, type ViewerState } from './subdiv-viewer';
+import { type LargeStepInfo, type SchemeOptions, SubdivViewer, type ViewerState } from './subdiv-viewer';
 import type { SubdivLabTestApi, TestError } from './test-api';
 
 const VIEW_STORAGE_KEY = 'subdivlab.view';
@@ -36,6 +39,7 @@ export class AppShell {
   private readonly confirm = new ConfirmDialog();
   private readonly progress: ProgressOverlay;
   private readonly scheme: SchemePanel;
+  private readonly rules: RulesPanel;
   private readonly levels: LevelPanel;
   private readonly display: DisplayPanel;
   private readonly facts = new FactsPanel();
@@ -45,6 +49,9 @@ export class AppShell {
   private readonly fileInput: HTMLInputElement;
   private lastError: TestError | null = null;
   private schemes: string[] = [];
+  /** Rules of the custom scheme (from the rules panel) and quad-triangle's border option. */
+  private customRules: RuleSet | null = null;
+  private fixedBoundary = false;
 
   constructor(root: HTMLElement) {
     this.fileInput = el('input', {
@@ -78,8 +85,23 @@ export class AppShell {
     stage.append(this.emptyHint, this.facts.element, this.progress.element);
 
     this.scheme = new SchemePanel({
-      onScheme: (s) => this.viewer.setScheme(s),
+      onScheme: (s) => {
+        this.viewer.setScheme(s);
+        this.viewer.setSchemeOptions(this.schemeOptions());
+        if (s === 'custom') void this.rules.ensureRules();
+      },
       onTriangulate: (t) => this.viewer.setTriangulate(t),
+      onFixedBoundary: (fixed) => {
+        this.fixedBoundary = fixed;
+        void this.recompute(0);
+      },
+    });
+    this.rules = new RulesPanel({
+      check: (rules) => checkRulesInCore(this.viewer.client, rules),
+      apply: (rules, minLevel) => {
+        this.customRules = rules;
+        return this.recompute(minLevel);
+      },
     });
     this.levels = new LevelPanel({
       onSubdivide: () => void this.subdivide(),
@@ -129,6 +151,7 @@ export class AppShell {
       'aside',
       { className: 'sidebar', attrs: { 'aria-label': 'Controls' } },
       this.scheme.element,
+      this.rules.element,
       this.levels.element,
       this.display.element,
       help,
@@ -162,9 +185,8 @@ export class AppShell {
     this.viewer
       .schemes()
       .then((all) => {
-        const names = all.filter((name) => !schemeInfo(name).needsRules);
-        this.schemes = names;
-        this.scheme.setSchemes(names, this.viewer.state.scheme);
+        this.schemes = all;
+        this.scheme.setSchemes(all, this.viewer.state.scheme);
         this.update(this.viewer.state);
       })
       .catch((error: unknown) => this.showError('SubdivLab core', error));
@@ -193,8 +215,11 @@ export class AppShell {
           aspect: this.viewer.view.camera.aspect,
           gpuGeometries: this.viewer.view.gpuMemory().geometries,
           edgeSegments: this.viewer.view.edgeSegments(),
+          customRules: this.customRules,
+          smoothBoundary: !this.fixedBoundary,
         };
       },
+      positions: () => Array.from(this.viewer.mesh?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
     };
   }
@@ -247,13 +272,36 @@ export class AppShell {
     }
   }
 
-  private async subdivide(): Promise<void> {
+  private async subdivide(): Promise<boolean> {
     const state = this.viewer.state;
-    if (state.levelCount === 0) return;
+    if (state.levelCount === 0) return false;
     try {
-      await this.viewer.subdivide();
+      // The custom scheme steps with the panel's rules: wait for the first preset.
+      if (state.scheme === 'custom' && !this.customRules) await this.rules.ensureRules();
+      return await this.viewer.subdivide();
     } catch (error) {
       this.showError(state.modelName ?? 'mesh', error, true);
+      return false;
+    }
+  }
+
+  /** Options of every step besides scheme and level: the custom rules, quad-triangle's border. */
+  private schemeOptions(): SchemeOptions {
+    const scheme = this.viewer.state.scheme;
+    if (scheme === 'custom') return this.customRules ? { rules: this.customRules } : {};
+    if (scheme === 'quad-triangle') return { smoothBoundary: !this.fixedBoundary };
+    return {};
+  }
+
+  /**
+   * Hands the options to the viewer (which drops the levels computed with
+   * others) and computes again up to the shown level, or `minLevel` if higher.
+   */
+  private async recompute(minLevel: number): Promise<void> {
+    const target = Math.max(minLevel, this.viewer.state.level);
+    this.viewer.setSchemeOptions(this.schemeOptions());
+    while (this.viewer.state.levelCount > 0 && this.viewer.state.level < target) {
+      if (!(await this.subdivide())) return;
     }
   }
 
@@ -353,7 +401,12 @@ export class AppShell {
   private update(state: ViewerState): void {
     this.modelName.textContent = state.modelName ?? 'No model loaded';
     this.emptyHint.hidden = state.levelCount > 0;
-    this.scheme.update(state);
+    const rules = state.scheme === 'custom' ? this.customRules : null;
+    this.scheme.update(state, {
+      needsTriangles: rules ? hostNeedsTriangles(rules.host) : undefined,
+      fixedBoundary: this.fixedBoundary,
+    });
+    this.rules.element.hidden = state.scheme !== 'custom';
     this.levels.update(state);
     this.display.update(state, this.savedView() !== null);
     this.facts.update(state);

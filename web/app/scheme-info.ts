@@ -8,7 +8,7 @@ export interface SchemeInfo {
   description: string;
   /** The scheme refuses faces other than triangles (the core's `not_triangles`). */
   needsTriangles: boolean;
-  /** The scheme takes user rules (issue 4's rules panel); not offered until that panel exists. */
+  /** The scheme steps with the rules panel's rule set. */
   needsRules?: boolean;
 }
 
@@ -50,7 +50,7 @@ const INFO: Record<string, SchemeInfo> = {
   },
   custom: {
     label: 'Custom rules',
-    description: 'Your own weights on a refinement host (see the rules panel).',
+    description: 'Your own weights on a refinement host (PQQ, PTQ, DQQ or √3): edit them in the Rules panel.',
     needsTriangles: false,
     needsRules: true,
   },

@@ -3,6 +3,7 @@
  * (level, counts, last error, render mode, camera) instead of pixels.
  */
 import type { MeshFacts } from '../core/mesh';
+import type { RuleSet } from '../core/rule-set';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
 
@@ -35,12 +36,18 @@ export interface SubdivLabTestState {
   gpuGeometries: number;
   /** Segments of the polygon-edge lines of the shown level. */
   edgeSegments: number;
+  /** Rules the custom scheme steps with (the rules panel's last Apply, preset or file); null before any. */
+  customRules: RuleSet | null;
+  /** quad-triangle's border option (false: "Fixed boundary" is checked). */
+  smoothBoundary: boolean;
 }
 
 export interface SubdivLabTestApi {
   state(): SubdivLabTestState;
   /** Lowers the budget over which a step asks first (to test the question with small meshes). */
   setMemoryBudget(bytes: number): void;
+  /** Vertex positions of the shown level, x0 y0 z0 x1 ... (empty before a load). */
+  positions(): number[];
 }
 
 declare global {

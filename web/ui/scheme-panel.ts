@@ -1,7 +1,7 @@
 /**
- * Scheme picker: every scheme the core offers, a one-line description, and
- * for schemes that need triangles a note and a "Triangulate first" option
- * when the loaded mesh has other faces.
+ * Scheme picker: every scheme the core offers, a one-line description, for
+ * schemes that need triangles a note and a "Triangulate first" option when
+ * the loaded mesh has other faces, and quad-triangle's "Fixed boundary".
  */
 import { schemeInfo } from '../app/scheme-info';
 import type { ViewerState } from '../app/subdiv-viewer';
@@ -11,6 +11,16 @@ import { el, section, uniqueId } from './dom';
 export interface SchemePanelHandlers {
   onScheme: (scheme: SchemeName) => void;
   onTriangulate: (triangulate: boolean) => void;
+  /** quad-triangle: keep border vertices on the control border (smoothBoundary = false). */
+  onFixedBoundary: (fixed: boolean) => void;
+}
+
+/** What the panel shows besides the viewer's state. */
+export interface SchemeExtras {
+  /** The scheme needs triangles (default: scheme-info's; custom rules depend on their host). */
+  needsTriangles?: boolean;
+  /** quad-triangle's border option. */
+  fixedBoundary: boolean;
 }
 
 export class SchemePanel {
@@ -20,6 +30,8 @@ export class SchemePanel {
   private readonly triangles: HTMLElement;
   private readonly triangleNote: HTMLElement;
   private readonly triangulate: HTMLInputElement;
+  private readonly fixedBoundary: HTMLInputElement;
+  private readonly fixedBoundaryRow: HTMLElement;
 
   constructor(handlers: SchemePanelHandlers) {
     const selectId = uniqueId('scheme');
@@ -46,6 +58,15 @@ export class SchemePanel {
       this.triangleNote,
       el('label', { attrs: { for: checkboxId } }, this.triangulate, ' Triangulate first (CGAL triangulate_faces)'),
     );
+    const fixedId = uniqueId('fixed-boundary');
+    this.fixedBoundary = el('input', { testId: 'controls.fixed-boundary', attrs: { type: 'checkbox', id: fixedId } });
+    this.fixedBoundary.addEventListener('change', () => handlers.onFixedBoundary(this.fixedBoundary.checked));
+    this.fixedBoundaryRow = el(
+      'label',
+      { className: 'check', attrs: { for: fixedId } },
+      this.fixedBoundary,
+      ' Fixed boundary (border vertices stay on the control border)',
+    );
     this.element = section(
       'Scheme',
       'scheme-panel',
@@ -53,6 +74,7 @@ export class SchemePanel {
       this.select,
       this.description,
       this.triangles,
+      this.fixedBoundaryRow,
     );
   }
 
@@ -65,17 +87,19 @@ export class SchemePanel {
     this.select.disabled = false;
   }
 
-  update(state: ViewerState): void {
+  update(state: ViewerState, extras: SchemeExtras): void {
     if (!this.select.disabled && this.select.value !== state.scheme) this.select.value = state.scheme;
     const info = schemeInfo(state.scheme);
     this.description.textContent = info.description;
     this.triangulate.checked = state.triangulate;
     const facts = state.facts;
     const others = facts ? facts.quads + facts.otherFaces : 0;
-    const show = info.needsTriangles && others > 0;
+    const show = (extras.needsTriangles ?? info.needsTriangles) && others > 0;
     this.triangles.hidden = !show;
     this.triangleNote.textContent = show
       ? `${info.label} needs triangles; this mesh has ${others} other face${others === 1 ? '' : 's'}.`
       : '';
+    this.fixedBoundaryRow.hidden = state.scheme !== 'quad-triangle';
+    this.fixedBoundary.checked = extras.fixedBoundary;
   }
 }
