@@ -26,6 +26,12 @@ function run(cmd, args, options = {}) {
   return result.status ?? 1;
 }
 
+/** Adds a suite's counts; a failing step that reported no failed test counts as one failure. */
+function count(status, passed, failed) {
+  totals.passed += passed;
+  totals.failed += status !== 0 && failed === 0 ? 1 : failed;
+}
+
 function heading(title) {
   console.log(`\n=== ${title} ===`);
 }
@@ -62,10 +68,9 @@ function nativeTests() {
     const head = /<testsuites[^>]*>/.exec(readFileSync(xml, 'utf8'))?.[0] ?? '';
     const attr = (name) => Number(new RegExp(`\\b${name}="(\\d+)"`).exec(head)?.[1] ?? 0);
     const failed = attr('failures') + attr('errors');
-    totals.passed += attr('tests') - failed - attr('disabled') - attr('skipped');
-    totals.failed += failed;
-  } else if (status !== 0) {
-    totals.failed += 1;
+    count(status, attr('tests') - failed - attr('disabled') - attr('skipped'), failed);
+  } else {
+    count(status, 0, 0);
   }
   return status === 0;
 }
@@ -76,12 +81,7 @@ function unitTests() {
   rmSync(json, { force: true });
   const status = run(bin('vitest'), ['run', '--reporter=default', '--reporter=json', `--outputFile.json=${json}`]);
   const report = readJson(json);
-  if (report) {
-    totals.passed += report.numPassedTests;
-    totals.failed += report.numFailedTests;
-  } else if (status !== 0) {
-    totals.failed += 1;
-  }
+  count(status, report?.numPassedTests ?? 0, report?.numFailedTests ?? 0);
   return status === 0;
 }
 
@@ -96,12 +96,7 @@ function e2eTests() {
   const env = { ...process.env, PLAYWRIGHT_JSON_OUTPUT_NAME: json };
   const status = run(bin('playwright'), ['test', '--reporter=list,json'], { env });
   const stats = readJson(json)?.stats;
-  if (stats) {
-    totals.passed += stats.expected + stats.flaky;
-    totals.failed += stats.unexpected;
-  } else if (status !== 0) {
-    totals.failed += 1;
-  }
+  count(status, stats ? stats.expected + stats.flaky : 0, stats?.unexpected ?? 0);
   return status === 0;
 }
 
