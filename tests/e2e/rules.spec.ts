@@ -118,6 +118,71 @@ test('rules panel: Loop preset equals loop; an edited weight changes the surface
   });
 });
 
+for (const { preset, ruleName, scheme, sample, host, field, value } of [
+  {
+    preset: 'doo-sabin',
+    ruleName: 'Doo-Sabin',
+    scheme: 'doo-sabin',
+    sample: 'cube',
+    host: 'DQQ',
+    field: 'corner.other',
+    value: '(3 + 2*cos(2*pi*j/k))/(4*k)',
+  },
+  {
+    preset: 'sqrt3',
+    ruleName: 'Sqrt(3)',
+    scheme: 'sqrt3',
+    sample: 'octahedron',
+    host: '√3',
+    field: 'vertex.neighbour',
+    value: '(4 - 2*cos(2*pi/n))/(9*n)',
+  },
+  {
+    preset: 'catmull-clark',
+    ruleName: 'Catmull-Clark',
+    scheme: 'catmull-clark',
+    sample: 'rhombicuboctahedron',
+    host: 'PQQ',
+    field: 'vertex.face',
+    value: '1/n^2',
+  },
+]) {
+  test(`rules panel: the ${preset} preset equals ${scheme} on the ${sample}`, async ({ app }) => {
+    await app.open();
+    await app.openSample(sample, `${sample}.off`);
+    await app.chooseScheme(scheme);
+    await subdivideTo(app, 2);
+    const counts = await countsShown(app);
+    const builtIn = await app.positions();
+    await app.chooseScheme('custom');
+    if (preset !== 'catmull-clark') await app.chooseRulePreset(preset, ruleName);
+    else await expect.poll(async () => (await app.state()).customRules?.name).toBe(ruleName);
+    await expect(app.byTestId('rules.host')).toContainText(host);
+    await expect(app.weight(field)).toHaveValue(value);
+    await subdivideTo(app, 2);
+    expect(await countsShown(app)).toEqual(counts);
+    expect(maxDifference(await app.positions(), builtIn)).toBeLessThan(1e-12);
+  });
+}
+
+test('rules panel: a PTQ rule set on quads says it needs triangles and offers to triangulate', async ({ app }) => {
+  await app.open();
+  await app.openSample('cube', 'cube.off');
+  await app.chooseScheme('custom');
+  await expect.poll(async () => (await app.state()).customRules?.host).toBe('pqq');
+  await expect(app.byTestId('controls.triangle-note')).toBeHidden();
+  await app.chooseRulePreset('loop', 'Loop');
+  await expect(app.byTestId('controls.triangle-note')).toHaveText(
+    'The PTQ host needs triangles; this mesh has 6 other faces.',
+  );
+  await app.byTestId('controls.subdivide').click();
+  await expect(app.byTestId('error.message')).toContainText('needs a triangle mesh');
+  await app.byTestId('error.action').click();
+  await expect.poll(async () => (await app.state()).level).toBe(1);
+  // The cube triangulated (12 triangles, 18 edges), then Loop: 8 + 18 vertices, 48 triangles.
+  expect(await countsShown(app)).toEqual({ vertices: 26, edges: 72, faces: 48 });
+});
+
 test('rules panel refuses invalid weights with a message; Apply stays off', async ({ app }) => {
   await app.open();
   await app.openSample('tetrahedron', 'tetrahedron.off');

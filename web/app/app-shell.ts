@@ -19,7 +19,7 @@ import { FactsPanel } from '../ui/facts-panel';
 import { createGallery } from '../ui/gallery';
 import { LevelPanel } from '../ui/level-panel';
 import { ProgressOverlay } from '../ui/progress-overlay';
-import { hostNeedsTriangles, RulesPanel } from '../ui/rules-panel';
+import { hostLabel, hostNeedsTriangles, RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { installShortcuts, SHORTCUTS } from '../ui/shortcuts';
 import { exportFileName, saveBlob } from './file-names';
@@ -404,6 +404,7 @@ export class AppShell {
     const rules = state.scheme === 'custom' ? this.customRules : null;
     this.scheme.update(state, {
       needsTriangles: rules ? hostNeedsTriangles(rules.host) : undefined,
+      needsTrianglesWho: rules ? `The ${hostLabel(rules.host)} host` : undefined,
       fixedBoundary: this.fixedBoundary,
     });
     this.rules.element.hidden = state.scheme !== 'custom';

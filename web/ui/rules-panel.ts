@@ -45,6 +45,11 @@ const HOSTS: Record<RuleHost, string> = {
   sqrt3: '√3 — Kobbelt’s triangle trisection with edge flips; needs triangles',
 };
 
+/** The host's short name: PQQ, PTQ, DQQ, √3. */
+export function hostLabel(host: RuleHost): string {
+  return host === 'sqrt3' ? '√3' : host.toUpperCase();
+}
+
 /** The host refuses faces other than triangles. */
 export function hostNeedsTriangles(host: RuleHost): boolean {
   return host === 'ptq' || host === 'sqrt3';

@@ -19,6 +19,8 @@ export interface SchemePanelHandlers {
 export interface SchemeExtras {
   /** The scheme needs triangles (default: scheme-info's; custom rules depend on their host). */
   needsTriangles?: boolean;
+  /** Who needs them, for the note (default: the scheme's label), e.g. "The PTQ host". */
+  needsTrianglesWho?: string;
   /** quad-triangle's border option. */
   fixedBoundary: boolean;
 }
@@ -97,7 +99,7 @@ export class SchemePanel {
     const show = (extras.needsTriangles ?? info.needsTriangles) && others > 0;
     this.triangles.hidden = !show;
     this.triangleNote.textContent = show
-      ? `${info.label} needs triangles; this mesh has ${others} other face${others === 1 ? '' : 's'}.`
+      ? `${extras.needsTrianglesWho ?? info.label} needs triangles; this mesh has ${others} other face${others === 1 ? '' : 's'}.`
       : '';
     this.fixedBoundaryRow.hidden = state.scheme !== 'quad-triangle';
     this.fixedBoundary.checked = extras.fixedBoundary;
