@@ -25,6 +25,7 @@ const DEBIAN_PACKAGES = [
   'make',
   'chromium',
   'libcgal-demo',
+  'clang-format',
 ];
 
 function log(message) {

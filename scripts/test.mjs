@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 // Every test, in order, after `node scripts/setup.mjs` (npm test runs both):
-//   1. lint        biome check + tsc --noEmit
+//   1. lint        biome check + tsc --noEmit + clang-format --check
 //   2. native      build/native/core_tests (GoogleTest; built by setup.mjs --native)
 //   3. unit        vitest (tests/unit, Node against the real WASM and the CLI)
 //   4. e2e         Playwright (tests/e2e), when playwright.config.ts exists
@@ -54,7 +54,9 @@ function lint() {
   heading('lint: biome check');
   if (run(bin('biome'), ['check', '.']) !== 0) return false;
   heading('lint: tsc --noEmit');
-  return run(bin('tsc'), ['--noEmit', '-p', '.']) === 0;
+  if (run(bin('tsc'), ['--noEmit', '-p', '.']) !== 0) return false;
+  heading('lint: clang-format --check');
+  return run(process.execPath, [join(root, 'scripts', 'clang-format.mjs'), '--check']) === 0;
 }
 
 function nativeTests() {

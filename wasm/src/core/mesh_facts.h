@@ -10,11 +10,11 @@ namespace subdivlab {
 
 struct Mesh_facts {
   std::size_t vertices = 0, edges = 0, faces = 0;
-  std::size_t components = 0;   ///< connected components (by faces/edges)
-  std::size_t boundaries = 0;   ///< boundary loops
+  std::size_t components = 0;     ///< connected components (by faces/edges)
+  std::size_t boundaries = 0;     ///< boundary loops
   long euler_characteristic = 0;  ///< V - E + F
-  long genus = 0;               ///< (2*components - chi - boundaries) / 2
-  bool closed = false;          ///< no boundary loops
+  long genus = 0;                 ///< (2*components - chi - boundaries) / 2
+  bool closed = false;            ///< no boundary loops
   std::size_t triangles = 0, quads = 0, other_faces = 0;
   std::array<double, 3> bbox_min{}, bbox_max{};  ///< zeros for an empty mesh
   std::size_t control_edges = 0;  ///< pairs in Mesh_buffers::control_edges
