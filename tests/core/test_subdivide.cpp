@@ -787,11 +787,12 @@ TEST(SubdivideMemory, TooLargeFailsBeforeAllocatingAndLeavesNothingBehind) {
     EXPECT_EQ(r.status.code, Status_code::too_large);
   }
   EXPECT_EQ(g_live.load(), before) << "something stayed allocated";
-  // Level 5 was refused before it ran: the peak stayed at level 4's size.
+  // The run was refused before its first step: the peak stayed below what
+  // level 1 alone needs.
   const std::size_t peak = g_peak.load() - before;
-  const Result<Size_prediction> level4 =
-      predict_size(cube, options_for("catmull-clark", 4));
-  EXPECT_LE(peak, level4.value.peak_bytes);
+  const Result<Size_prediction> level1 =
+      predict_size(cube, options_for("catmull-clark", 1));
+  EXPECT_LE(peak, level1.value.peak_bytes);
   const std::string message = subdivide_mesh(cube, o).status.message;
   EXPECT_EQ(message.rfind("level 5 of catmull-clark would need about ", 0), 0u)
       << message;
@@ -806,11 +807,15 @@ TEST(SubdivideMemory, TooLargeFailsBeforeAllocatingAndLeavesNothingBehind) {
   const Result<Mesh_buffers> ok = subdivide_mesh(cube, o);
   ASSERT_TRUE(ok.ok());
   EXPECT_EQ(ok.value.face_count(), 6144u);
-  // 20 levels stop at the first level that would not fit, without trying
-  // it: level 8 (393216 faces) fits in 100 MB, level 9 does not.
+  // 20 levels are refused at once, naming the first level that would not
+  // fit: level 8 (393216 faces) fits in 100 MB, level 9 does not.
   o.levels = 20;
   o.memory_limit_bytes = std::size_t{100} << 20;
+  const std::size_t live = g_live.load();
+  g_peak = live;
   const Result<Mesh_buffers> huge = subdivide_mesh(cube, o);
+  EXPECT_LE(g_peak.load() - live, level1.value.peak_bytes)
+      << "levels 1-8 were computed before the refusal";
   EXPECT_EQ(huge.status.code, Status_code::too_large);
   EXPECT_EQ(huge.status.message.rfind("level 9 of catmull-clark would need "
                                       "about ",

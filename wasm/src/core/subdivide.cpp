@@ -505,6 +505,41 @@ Status check_step(const std::string& scheme, const Step_need& need,
   return Status::success();
 }
 
+/// Counts after the last step of a run and its largest peak, predicted from
+/// the counts `c` of the mesh the run starts from.
+struct Run_prediction {
+  Counts after;
+  double peak_bytes = 0;
+};
+
+/// Predicts every step of a run. With `refuse`, the first step that would not
+/// fit (options.memory_limit_bytes, or 2^32 halfedges) ends it with too_large,
+/// so a run is refused before its first step, not after the levels that fit.
+Status predict_run(const Subdivide_options& options, Counts c, double input,
+                   double marks, bool refuse, Run_prediction& out) {
+  Caps caps = Caps::exact(c);
+  double peak = to_buffers_peak(c, caps, input) * kSlackFactor + kSlackBytes;
+  for (int i = 0; i < options.levels; ++i) {
+    const int global_step = options.start_level + i;
+    const Step_need need =
+        step_need(size_model(options), c, caps, global_step,
+                  i + 1 == options.levels, input + control_edge_bytes(marks));
+    if (refuse) {
+      const Status s = check_step(options.scheme, need, global_step,
+                                  options.memory_limit_bytes);
+      if (!s.ok()) return s;
+    }
+    marks *= 2;
+    peak = std::max(peak, need.peak_bytes);
+    c = need.after;
+    caps = need.caps_after;
+    if (!(c.faces < 1e300)) break;  // hopeless anyway; keep it finite
+  }
+  out.after = c;
+  out.peak_bytes = peak;
+  return Status::success();
+}
+
 // ---------------------------------------------------------------------------
 // Steps.
 
@@ -710,22 +745,13 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
         buffers_bytes(static_cast<double>(in.vertex_count()),
                       static_cast<double>(in.face_count()),
                       static_cast<double>(in.face_indices.size()));
-    Caps caps = Caps::exact(c);
-    double peak = to_buffers_peak(c, caps, input) * kSlackFactor + kSlackBytes;
-    for (int i = 0; i < options.levels; ++i) {
-      const Step_need need =
-          step_need(size_model(options), c, caps, options.start_level + i,
-                    i + 1 == options.levels, input + control_edge_bytes(marks));
-      marks *= 2;
-      peak = std::max(peak, need.peak_bytes);
-      c = need.after;
-      caps = need.caps_after;
-      if (!(c.faces < 1e300)) break;  // hopeless anyway; keep it finite
-    }
+    Run_prediction run;
+    predict_run(options, c, input, marks, false, run);
+    c = run.after;
     result.value.vertices = to_size(c.vertices);
     result.value.edges = to_size(c.edges);
     result.value.faces = to_size(c.faces);
-    result.value.peak_bytes = to_size(peak);
+    result.value.peak_bytes = to_size(run.peak_bytes);
   } catch (const std::exception& e) {
     result.status = Status::error(Status_code::internal_error,
                                   std::string("internal error: ") + e.what());
@@ -757,6 +783,11 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
         buffers_bytes(static_cast<double>(in.vertex_count()),
                       static_cast<double>(in.face_count()),
                       static_cast<double>(in.face_indices.size()));
+    // Refuse at once a run whose later level would not fit.
+    Run_prediction run;
+    if (s.ok())
+      s = predict_run(options, counts, input,
+                      static_cast<double>(control.size()), true, run);
     // The model follows the real mesh: its counts are re-read after every
     // step, the array capacities simulated (they are not observable).
     Caps caps = Caps::exact(counts);
