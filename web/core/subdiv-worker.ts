@@ -5,7 +5,7 @@
  */
 import type { Mesh } from './mesh';
 import { renderBuffers } from './render-buffers';
-import { exportMesh, init, meshFacts, parseMesh, predictSize, schemeNames, subdivide } from './subdiv-core';
+import { checkRules, exportMesh, init, meshFacts, parseMesh, predictSize, schemeNames, subdivide } from './subdiv-core';
 import { SubdivError } from './subdiv-error';
 import type {
   LevelData,
@@ -72,6 +72,11 @@ const handlers: Handlers = {
   async export({ mesh, format }) {
     await init();
     return exportMesh(mesh, format);
+  },
+  async checkRules({ rules }) {
+    await init();
+    checkRules(rules);
+    return null;
   },
 };
 

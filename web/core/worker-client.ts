@@ -4,6 +4,7 @@
  * starts a fresh one; callers keep whatever results they already have.
  */
 import type { Mesh, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
+import type { RuleSet } from './rule-set';
 import { SubdivError } from './subdiv-error';
 import type {
   LevelData,
@@ -74,6 +75,11 @@ export class WorkerClient {
   /** OFF or OBJ text of `mesh`. */
   exportMesh(mesh: Mesh, format: MeshFormat): Promise<string> {
     return this.request('export', { mesh, format });
+  }
+
+  /** Resolves when the core accepts `rules`; rejects with its SubdivError (invalid_argument) otherwise. */
+  checkRules(rules: RuleSet): Promise<null> {
+    return this.request('checkRules', { rules });
   }
 
   /** True while a request is running or queued. */

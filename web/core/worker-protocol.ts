@@ -4,6 +4,7 @@
  * transferred, not copied.
  */
 import type { Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
+import type { RuleSet } from './rule-set';
 import type { SubdivErrorCode } from './subdiv-error';
 
 /** One level as the viewer keeps it: the mesh, its facts and what the GPU draws. */
@@ -29,6 +30,8 @@ export interface WorkerRequests {
   predict: { args: { mesh: Mesh; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a mesh. */
   export: { args: { mesh: Mesh; format: MeshFormat }; result: string };
+  /** The core's verdict on a custom rule set, without a mesh: answers null or fails with its SubdivError. */
+  checkRules: { args: { rules: RuleSet }; result: null };
 }
 
 export type WorkerRequestKind = keyof WorkerRequests;
