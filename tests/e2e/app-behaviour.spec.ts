@@ -40,6 +40,8 @@ test('quad-triangle on the rhombicuboctahedron from the gallery', async ({ app }
   await app.byTestId('gallery').locator('summary').click();
   await app.byTestId('gallery.rhombicuboctahedron').click();
   await expect(app.byTestId('facts.model')).toHaveText('rhombicuboctahedron.off');
+  // At level 0 every one of the 48 edges is a control edge.
+  await expect(app.byTestId('facts.control-edges')).toHaveText('48');
   await app.chooseScheme('quad-triangle');
   await expect(app.byTestId('controls.scheme-description')).toContainText('triangles and quads');
   await app.subdivide();
@@ -53,6 +55,12 @@ test('quad-triangle on the rhombicuboctahedron from the gallery', async ({ app }
     faceTypes: '32 triangles, 72 quads',
   });
   await expect(app.byTestId('facts.control-edges')).toHaveText('96');
+  // Doo-Sabin is dual: no edge of its result lies on a control edge.
+  await app.byTestId('controls.reset').click();
+  await app.chooseScheme('doo-sabin');
+  await app.subdivide();
+  expect((await app.facts()).faces).toBe(24 + 48 + 26);
+  await expect(app.byTestId('facts.control-edges')).toHaveText('–');
 });
 
 test('Open… and the O key open the file picker', async ({ app }) => {

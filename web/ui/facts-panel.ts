@@ -12,7 +12,6 @@ const ROWS: readonly { key: string; label: string; value: (f: MeshFacts) => stri
   { key: 'euler', label: 'Euler characteristic', value: (f) => String(f.eulerCharacteristic) },
   { key: 'genus', label: 'Genus', value: (f) => String(f.genus) },
   { key: 'face-types', label: 'Face types', value: faceTypes },
-  { key: 'control-edges', label: 'Control edges', value: (f) => String(f.controlEdges) },
 ];
 
 /** "8 triangles, 18 quads", "6 quads", "1 other". */
@@ -27,11 +26,21 @@ export function faceTypes(f: MeshFacts): string {
   return parts.join(', ') || 'none';
 }
 
+/**
+ * Every edge of level 0 is a control edge; later levels carry the marks the
+ * core kept (primal schemes only: dual schemes and √3 keep none, shown as –).
+ */
+function controlEdges(f: MeshFacts, level: number): string {
+  if (level === 0) return String(f.edges);
+  return f.controlEdges > 0 ? String(f.controlEdges) : '–';
+}
+
 export class FactsPanel {
   readonly element: HTMLElement;
   private readonly cells = new Map<string, HTMLElement>();
   private readonly model: HTMLElement;
   private readonly level: HTMLElement;
+  private readonly controlEdges: HTMLElement;
   private readonly time: HTMLElement;
 
   constructor() {
@@ -44,6 +53,7 @@ export class FactsPanel {
     this.model = row('model', 'Model');
     this.level = row('level', 'Level');
     for (const { key, label } of ROWS) this.cells.set(key, row(key, label));
+    this.controlEdges = row('control-edges', 'Control edges');
     this.time = row('time', 'Last step');
     this.element = el(
       'section',
@@ -61,6 +71,7 @@ export class FactsPanel {
       const cell = this.cells.get(key);
       if (cell) cell.textContent = state.facts ? value(state.facts) : '–';
     }
+    this.controlEdges.textContent = state.facts ? controlEdges(state.facts, state.level) : '–';
     this.time.textContent = state.stepMs === null ? '–' : `${state.stepMs.toFixed(1)} ms`;
   }
 }
