@@ -838,7 +838,7 @@ TEST(SubdivideMemory, BadAllocInsideCgalBecomesAnErrorAndLeaksNothing) {
     const Result<Mesh_buffers> r = subdivide_mesh(cube, o);
     g_fail_above = 0;
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.status.code, Status_code::internal_error);
+    EXPECT_EQ(r.status.code, Status_code::too_large);
     EXPECT_NE(r.status.message.find("out of memory at level "),
               std::string::npos)
         << r.status.message;

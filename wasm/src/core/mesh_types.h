@@ -36,7 +36,7 @@ enum class Status_code {
   parse_error,    ///< the text is not a valid OFF/OBJ file
   invalid_mesh,   ///< parsed, but not a valid oriented 2-manifold polygon mesh
   not_triangles,  ///< a scheme needs triangles and the mesh has other faces
-  too_large,      ///< the predicted result would not fit in memory
+  too_large,  ///< the result would not fit in memory (predicted, or ran out)
   invalid_argument,  ///< unknown scheme, negative levels, bad weights ...
   internal_error     ///< CGAL or the core threw where it should not have
 };

@@ -822,8 +822,9 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
                       "CGAL failed at level " + std::to_string(level) + " of " +
                           options.scheme + ": " + e.what());
   } catch (const std::bad_alloc& e) {
+    // The prediction should have refused the step; this is the last guard.
     result.status =
-        Status::error(Status_code::internal_error,
+        Status::error(Status_code::too_large,
                       "out of memory at level " + std::to_string(level) +
                           " of " + options.scheme + " (" + e.what() + ")");
   } catch (const std::exception& e) {

@@ -33,7 +33,8 @@ struct Subdivide_options {
 };
 
 /// Counts predicted for a mesh after `levels` steps of a scheme, and the
-/// peak bytes the last step needs (CGAL's hosts reserve more than they keep).
+/// peak bytes of the run: the largest of its steps, in practice the last
+/// (CGAL's hosts reserve more than they keep).
 struct Size_prediction {
   std::size_t vertices = 0, edges = 0, faces = 0;
   std::size_t peak_bytes = 0;
