@@ -56,7 +56,8 @@ function installDebianPackages() {
   const apt = (aptArgs) =>
     asRoot ? run('apt-get', aptArgs, { env }) : run('sudo', ['-E', 'apt-get', ...aptArgs], { env });
   apt(['update', '-q']);
-  apt(['install', '-y', '-q', '--no-install-recommends', ...missing]);
+  // With recommends: Chromium's fonts and GL libraries come that way.
+  apt(['install', '-y', '-q', ...missing]);
 }
 
 function installNpmDependencies() {
