@@ -661,6 +661,31 @@ Status sqrt3_step(Mesh& mesh, int global_step) {
   return Status::success();
 }
 
+/// Averaging overflows near the largest double: a file's 1e308 is finite and
+/// accepted, but a sum of such coordinates is not (and custom weights can be
+/// large too). A step must not hand out inf or nan, which no file can hold.
+Status check_finite_points(const Mesh& mesh, const Mesh_buffers& in,
+                           const std::string& scheme, int level) {
+  for (Mesh::Vertex_index v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
+      continue;
+    double largest = 0.0;
+    for (double x : in.positions) largest = std::max(largest, std::abs(x));
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", largest);
+    return Status::error(
+        Status_code::invalid_mesh,
+        "level " + std::to_string(level) + " of " + scheme +
+            " overflows: a new coordinate is not finite (the input's "
+            "coordinates reach " +
+            buf +
+            "; coordinates or weights this large exceed double precision "
+            "arithmetic, scale the mesh down)");
+  }
+  return Status::success();
+}
+
 }  // namespace
 
 /// Runs ONE step of `options.scheme` on `mesh`. `level_index` counts the
@@ -802,6 +827,7 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       const auto old_end =
           static_cast<std::uint32_t>(mesh.number_of_vertices());
       if (s.ok()) s = run_step(mesh, options, i);
+      if (s.ok()) s = check_finite_points(mesh, in, options.scheme, level);
       if (s.ok() && track)
         control = refine_control_edges(mesh, old_end, control);
       if (s.ok()) {

@@ -1,0 +1,79 @@
+// Inputs a hostile user or a careless exporter produces that are valid by
+// the letter of the format but break naive arithmetic or messages.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/mesh_io.h"
+#include "core/subdivide.h"
+
+namespace subdivlab {
+namespace {
+
+/// A single quad whose corners reach `c` (finite, but near the largest
+/// double), read from OFF text as a user's file would be.
+Mesh_buffers huge_quad(const std::string& c) {
+  const std::string text = "OFF\n4 1 0\n0 0 0\n" + c + " 0 0\n" + c + " " + c +
+                           " 0\n0 " + c + " 0\n4 0 1 2 3\n";
+  Result<Mesh_buffers> r = read_mesh(text, Mesh_format::off);
+  EXPECT_TRUE(r.ok()) << r.status.message;
+  return r.value;
+}
+
+TEST(HostileInput, CoordinatesNearTheLargestDoubleOverflowWithAMessage) {
+  // Catmull-Clark's face point sums the four corners: 2 * 1.7e308 is inf.
+  Subdivide_options o;
+  o.scheme = "catmull-clark";
+  o.levels = 1;
+  const Result<Mesh_buffers> r = subdivide_mesh(huge_quad("1.7e308"), o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
+  EXPECT_EQ(r.status.message,
+            "level 1 of catmull-clark overflows: a new coordinate is not "
+            "finite (the input's coordinates reach 1.7e+308; coordinates or "
+            "weights this large exceed double precision arithmetic, scale "
+            "the mesh down)");
+}
+
+TEST(HostileInput, NoSchemeHandsOutNonFiniteCoordinates) {
+  for (const char* scheme : {"catmull-clark", "loop", "doo-sabin", "sqrt3",
+                             "quad-triangle", "linear", "linear-tri"}) {
+    SCOPED_TRACE(scheme);
+    Subdivide_options o;
+    o.scheme = scheme;
+    o.levels = 2;
+    o.triangulate = true;
+    const Result<Mesh_buffers> r = subdivide_mesh(huge_quad("1.7e308"), o);
+    if (r.ok()) {
+      for (double x : r.value.positions) ASSERT_TRUE(std::isfinite(x));
+    } else {
+      EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
+      EXPECT_EQ(r.status.message.find(std::string("of ") + scheme +
+                                      " overflows: a new coordinate is not "
+                                      "finite"),
+                std::string("level 1 ").size())
+          << r.status.message;
+    }
+  }
+}
+
+TEST(HostileInput, LargeButSafeCoordinatesStillSubdivide) {
+  // 1e300 leaves room for the sums: the check must not refuse it.
+  Subdivide_options o;
+  o.scheme = "catmull-clark";
+  o.levels = 2;
+  const Result<Mesh_buffers> r = subdivide_mesh(huge_quad("1e300"), o);
+  ASSERT_TRUE(r.ok()) << r.status.message;
+  EXPECT_EQ(r.value.vertex_count(), 25u);
+  // The centre of the square is a face point at level 1 and stays put.
+  bool centre = false;
+  for (std::size_t v = 0; v < r.value.vertex_count(); ++v)
+    centre |= r.value.positions[3 * v] == 0.5e300 &&
+              r.value.positions[3 * v + 1] == 0.5e300;
+  EXPECT_TRUE(centre);
+}
+
+}  // namespace
+}  // namespace subdivlab
