@@ -75,5 +75,32 @@ TEST(HostileInput, LargeButSafeCoordinatesStillSubdivide) {
   EXPECT_TRUE(centre);
 }
 
+TEST(HostileInput, QuotedTokensCarryNoControlBytes) {
+  // ESC [ 2 J clears a terminal; a NUL ends a C string. Both are written as
+  // \xNN in the one-line message, which keeps the token recognisable.
+  const std::string text = std::string("v 0 0 \x1b[2J\n") + "v 1 0 0\nv 0 1 " +
+                           std::string(1, '\0') + "\nf 1 2 3\n";
+  Result<Mesh_buffers> r = read_mesh(text, Mesh_format::obj);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.message,
+            "line 1: z coordinate of vertex 1 is not a number: '\\x1B[2J'");
+  r = read_mesh("v 0 0 0\nv 1 0 0\nv 0 1 " + std::string(1, '\0') + "\n",
+                Mesh_format::obj);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.message,
+            "line 3: z coordinate of vertex 3 is not a number: '\\x00'");
+}
+
+TEST(HostileInput, LongTokensAreNotCutInsideAUtf8Character) {
+  // 39 ASCII bytes then "\u00e9" (2 bytes): cutting at 40 bytes would leave
+  // half a character, which a UTF-8 decoder turns into U+FFFD.
+  const std::string token = std::string(39, 'a') + "\xC3\xA9" + "zz";
+  const Result<Mesh_buffers> r =
+      read_mesh(token + " 1 2 3\n", Mesh_format::obj);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.message,
+            "line 1: unknown OBJ statement '" + std::string(39, 'a') + "...'");
+}
+
 }  // namespace
 }  // namespace subdivlab

@@ -142,11 +142,31 @@ bool parse_int(std::string_view tok, long long& out) {
 }
 
 std::string at(int line) { return "line " + std::to_string(line) + ": "; }
+/// A token of the file as messages quote it: at most 40 bytes, cut before a
+/// UTF-8 sequence rather than inside it, and control bytes (NUL, ESC ...)
+/// written as \xNN, so a file cannot put terminal escapes or a NUL into the
+/// one-line error a CLI prints.
 std::string quoted(std::string_view tok) {
   constexpr std::size_t max = 40;
-  std::string s(tok.substr(0, max));
-  if (tok.size() > max) s += "...";
-  return "'" + s + "'";
+  std::size_t n = std::min(tok.size(), max);
+  // A UTF-8 sequence has at most 3 continuation bytes (10xxxxxx).
+  for (int back = 0; back < 3 && n > 0 && n < tok.size() &&
+                     (static_cast<unsigned char>(tok[n]) & 0xC0) == 0x80;
+       ++back)
+    --n;
+  std::string s = "'";
+  for (const char c : tok.substr(0, n)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", u);
+      s += buf;
+    } else {
+      s += c;
+    }
+  }
+  if (n < tok.size()) s += "...";
+  return s + "'";
 }
 
 Result<Mesh_buffers> parse_fail(int line, const std::string& what) {
