@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -177,23 +178,27 @@ Status from_js_options(const val& js, Subdivide_options& options) {
     else if (!scheme.isUndefined())
       return Status::error(Status_code::invalid_argument,
                            "Option scheme must be a string.");
-    const auto read_int = [&js](const char* key, int& value) {
+    // Whole numbers in [-1e9, 1e9]. A larger levels is clamped to 1e9: every
+    // scheme at least doubles the mesh per step, so the memory check refuses
+    // it as it would the original (clamping start_level would change sqrt3's
+    // parity, so a larger start_level is refused).
+    const auto read_int = [&js](const char* key, int& value, bool clamp_up) {
       const val v = js[key];
       if (v.isUndefined()) return true;
       if (!v.isNumber()) return false;
       const double d = v.as<double>();
-      if (d != static_cast<double>(static_cast<long long>(d)) || d < -1e9 ||
-          d > 1e9)
-        return false;
-      value = static_cast<int>(d);
+      if (!std::isfinite(d) || d != std::floor(d) || d < -1e9) return false;
+      if (d > 1e9 && !clamp_up) return false;
+      value = static_cast<int>(std::min(d, 1e9));
       return true;
     };
-    if (!read_int("levels", options.levels))
+    if (!read_int("levels", options.levels, true))
       return Status::error(Status_code::invalid_argument,
-                           "Option levels must be an integer.");
-    if (!read_int("startLevel", options.start_level))
-      return Status::error(Status_code::invalid_argument,
-                           "Option startLevel must be an integer.");
+                           "Option levels must be a whole number, 0 or more.");
+    if (!read_int("startLevel", options.start_level, false))
+      return Status::error(
+          Status_code::invalid_argument,
+          "Option startLevel must be a whole number from 0 to 1000000000.");
     const val triangulate = js["triangulate"];
     if (!triangulate.isUndefined())
       options.triangulate = triangulate.as<bool>();
