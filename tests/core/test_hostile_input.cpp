@@ -102,5 +102,30 @@ TEST(HostileInput, LongTokensAreNotCutInsideAUtf8Character) {
             "line 1: unknown OBJ statement '" + std::string(39, 'a') + "...'");
 }
 
+TEST(HostileInput, CheckWritableRefusesBuffersWriteMeshWouldReadPast) {
+  Mesh_buffers m;
+  m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  m.face_sizes = {3};
+  m.face_indices = {0, 1, 2};
+  EXPECT_TRUE(check_writable(m).ok());
+
+  m.face_sizes = {40};  // write_mesh would read 37 indices past the array
+  Status s = check_writable(m);
+  EXPECT_EQ(s.code, Status_code::invalid_mesh);
+  EXPECT_EQ(s.message, "face sizes add up to 40 indices but there are 3");
+
+  m.face_sizes = {3};
+  m.face_indices = {0, 1, 7};
+  s = check_writable(m);
+  EXPECT_EQ(s.code, Status_code::invalid_mesh);
+  EXPECT_EQ(s.message, "vertex index 7 is out of range (3 vertices)");
+
+  m.face_indices = {0, 1, 2};
+  m.positions.push_back(5);
+  s = check_writable(m);
+  EXPECT_EQ(s.code, Status_code::invalid_mesh);
+  EXPECT_EQ(s.message, "positions hold 10 numbers, not a multiple of 3");
+}
+
 }  // namespace
 }  // namespace subdivlab

@@ -5,7 +5,7 @@ import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import type { SubdivideOptions } from '../../web/core/mesh';
-import { meshFacts, parseMesh, subdivide } from '../../web/core/subdiv-core';
+import { exportMesh, meshFacts, parseMesh, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
 import { FIXTURES_DIR, loadFixture } from './test-helpers';
 
@@ -79,5 +79,28 @@ describe('coordinates near the largest double', () => {
     const ok = subdivide(parseMesh(quad('1e300'), 'off'), { scheme: 'catmull-clark', levels: 1 });
     expect(Array.from(ok.positions).every(Number.isFinite)).toBe(true);
     expect(meshFacts(ok).faces).toBe(4);
+  });
+});
+
+describe('exportMesh on buffers that do not describe a mesh', () => {
+  const positions = new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+  const controlEdges = new Uint32Array();
+
+  it('refuses face sizes that run past the indices instead of writing heap bytes as indices', () => {
+    const mesh = { positions, faceSizes: new Uint32Array([40]), faceIndices: new Uint32Array([0, 1, 2]), controlEdges };
+    const error = failure(() => exportMesh(mesh, 'off'));
+    expect(error.code).toBe('invalid_mesh');
+    expect(error.message).toBe('face sizes add up to 40 indices but there are 3');
+  });
+
+  it('refuses an index past the vertices, which no reader could take back', () => {
+    const mesh = { positions, faceSizes: new Uint32Array([3]), faceIndices: new Uint32Array([0, 1, 7]), controlEdges };
+    const error = failure(() => exportMesh(mesh, 'obj'));
+    expect(error.code).toBe('invalid_mesh');
+    expect(error.message).toBe('vertex index 7 is out of range (3 vertices)');
+    // The module still works.
+    expect(exportMesh({ ...mesh, faceIndices: new Uint32Array([0, 1, 2]) }, 'obj')).toBe(
+      'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n',
+    );
   });
 });

@@ -274,8 +274,11 @@ val js_write_mesh(const val& mesh, const std::string& format_name) {
     Mesh_format format;
     if (!parse_format(format_name, format))
       return to_js_status(unknown_format(format_name));
+    const Mesh_buffers buffers = from_js_mesh(mesh);
+    const Status writable = check_writable(buffers);
+    if (!writable.ok()) return to_js_status(writable);
     val out = ok_object();
-    out.set("text", write_mesh(from_js_mesh(mesh), format));
+    out.set("text", write_mesh(buffers, format));
     return out;
   });
 }

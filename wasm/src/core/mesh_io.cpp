@@ -557,6 +557,30 @@ Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format) {
   }
 }
 
+Status check_writable(const Mesh_buffers& mesh) {
+  if (mesh.positions.size() % 3 != 0)
+    return Status::error(Status_code::invalid_mesh,
+                         "positions hold " +
+                             std::to_string(mesh.positions.size()) +
+                             " numbers, not a multiple of 3");
+  std::uint64_t total = 0;
+  for (const std::uint32_t k : mesh.face_sizes) total += k;
+  if (total != mesh.face_indices.size())
+    return Status::error(Status_code::invalid_mesh,
+                         "face sizes add up to " + std::to_string(total) +
+                             " indices but there are " +
+                             std::to_string(mesh.face_indices.size()));
+  const std::size_t nv = mesh.vertex_count();
+  for (std::size_t i = 0; i < mesh.face_indices.size(); ++i) {
+    if (mesh.face_indices[i] < nv) continue;
+    return Status::error(
+        Status_code::invalid_mesh,
+        "vertex index " + std::to_string(mesh.face_indices[i]) +
+            " is out of range (" + std::to_string(nv) + " vertices)");
+  }
+  return Status::success();
+}
+
 std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format) {
   std::string out;
   const std::size_t nv = mesh.vertex_count(), nf = mesh.face_count();
