@@ -127,5 +127,28 @@ TEST(HostileInput, CheckWritableRefusesBuffersWriteMeshWouldReadPast) {
   EXPECT_EQ(s.message, "positions hold 10 numbers, not a multiple of 3");
 }
 
+TEST(HostileInput, ARepeatedControlEdgeIsRefusedNotCountedTwice) {
+  // The unit square; its edge 0-1 given twice, once in each direction.
+  Mesh_buffers m;
+  m.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  m.face_sizes = {4};
+  m.face_indices = {0, 1, 2, 3};
+  m.control_edges = {0, 1, 1, 0};
+  Subdivide_options o;
+  o.scheme = "catmull-clark";
+  o.levels = 2;
+  o.start_level = 1;
+  Result<Mesh_buffers> r = subdivide_mesh(m, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.code, Status_code::invalid_argument);
+  EXPECT_EQ(r.status.message,
+            "control edge 1 (1, 0) repeats an earlier control edge");
+  // Given once, it becomes 2^2 marked edges.
+  m.control_edges = {0, 1};
+  r = subdivide_mesh(m, o);
+  ASSERT_TRUE(r.ok()) << r.status.message;
+  EXPECT_EQ(r.value.control_edges.size(), 2u * 4u);
+}
+
 }  // namespace
 }  // namespace subdivlab

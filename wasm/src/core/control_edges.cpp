@@ -59,15 +59,21 @@ Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
     return fail("control edges must come in pairs of vertex indices (got " +
                 std::to_string(in.control_edges.size()) + " numbers)");
   r.value.reserve(in.control_edges.size() / 2);
+  // A repeated edge would be refined, counted and drawn twice.
+  std::vector<bool> seen(mesh.num_edges(), false);
   for (std::size_t i = 0; i < in.control_edges.size(); i += 2) {
     const std::uint32_t a = in.control_edges[i], b = in.control_edges[i + 1];
     const std::string name = "control edge " + std::to_string(i / 2) + " (" +
                              std::to_string(a) + ", " + std::to_string(b) + ")";
     if (a >= nv || b >= nv || rank[a] == 0xffffffffu || rank[b] == 0xffffffffu)
       return fail(name + " names a vertex that is not in the mesh");
-    if (mesh.halfedge(vertex(rank[a]), vertex(rank[b])) ==
-        Mesh::null_halfedge())
+    const Mesh::Halfedge_index h =
+        mesh.halfedge(vertex(rank[a]), vertex(rank[b]));
+    if (h == Mesh::null_halfedge())
       return fail(name + " is not an edge of the mesh");
+    if (seen[mesh.edge(h).idx()])
+      return fail(name + " repeats an earlier control edge");
+    seen[mesh.edge(h).idx()] = true;
     r.value.emplace_back(rank[a], rank[b]);
   }
   return r;
