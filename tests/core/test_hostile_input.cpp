@@ -125,6 +125,12 @@ TEST(HostileInput, CheckWritableRefusesBuffersWriteMeshWouldReadPast) {
   s = check_writable(m);
   EXPECT_EQ(s.code, Status_code::invalid_mesh);
   EXPECT_EQ(s.message, "positions hold 10 numbers, not a multiple of 3");
+
+  m.positions.pop_back();
+  m.positions[7] = std::nan("");
+  s = check_writable(m);
+  EXPECT_EQ(s.code, Status_code::invalid_mesh);
+  EXPECT_EQ(s.message, "vertex 2 has a non-finite coordinate");
 }
 
 TEST(HostileInput, ARepeatedControlEdgeIsRefusedNotCountedTwice) {

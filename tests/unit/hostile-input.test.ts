@@ -93,6 +93,18 @@ describe('exportMesh on buffers that do not describe a mesh', () => {
     expect(error.message).toBe('face sizes add up to 40 indices but there are 3');
   });
 
+  it('refuses a non-finite coordinate, which it would write as "nan"', () => {
+    const mesh = {
+      positions: new Float64Array([0, 0, 0, 1, 0, 0, Number.NaN, 1, 0]),
+      faceSizes: new Uint32Array([3]),
+      faceIndices: new Uint32Array([0, 1, 2]),
+      controlEdges,
+    };
+    const error = failure(() => exportMesh(mesh, 'off'));
+    expect(error.code).toBe('invalid_mesh');
+    expect(error.message).toBe('vertex 2 has a non-finite coordinate');
+  });
+
   it('refuses an index past the vertices, which no reader could take back', () => {
     const mesh = { positions, faceSizes: new Uint32Array([3]), faceIndices: new Uint32Array([0, 1, 7]), controlEdges };
     const error = failure(() => exportMesh(mesh, 'obj'));

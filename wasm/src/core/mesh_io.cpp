@@ -563,6 +563,13 @@ Status check_writable(const Mesh_buffers& mesh) {
                          "positions hold " +
                              std::to_string(mesh.positions.size()) +
                              " numbers, not a multiple of 3");
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (std::isfinite(mesh.positions[i])) continue;
+    // "nan" or "inf" in the text would be refused when read back.
+    return Status::error(
+        Status_code::invalid_mesh,
+        "vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
+  }
   std::uint64_t total = 0;
   for (const std::uint32_t k : mesh.face_sizes) total += k;
   if (total != mesh.face_indices.size())

@@ -19,8 +19,9 @@ enum class Mesh_format { off, obj };
 /// invalid_mesh. Vertices no face uses are dropped, as build_mesh drops them.
 Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format);
 
-/// Whether write_mesh can write `mesh`: positions in threes, face sizes that
-/// add up to the indices, every index naming a vertex. O(n) without
+/// Whether write_mesh can write `mesh` so that read_mesh takes it back:
+/// positions in threes and finite, face sizes that add up to the indices,
+/// every index naming a vertex. O(n) without
 /// allocating (it does not check manifoldness), for buffers from outside the
 /// core. Fails with invalid_mesh.
 Status check_writable(const Mesh_buffers& mesh);
