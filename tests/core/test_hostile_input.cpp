@@ -156,5 +156,37 @@ TEST(HostileInput, ARepeatedControlEdgeIsRefusedNotCountedTwice) {
   EXPECT_EQ(r.value.control_edges.size(), 2u * 4u);
 }
 
+TEST(HostileInput, AFaceTriangulationRefusesIsNamed) {
+  // A triangle, then a quad on its edge 0-1 whose corners all lie on the x
+  // axis: valid topology, but no normal to triangulate by.
+  Mesh_buffers m;
+  m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 2, 0, 0};
+  m.face_sizes = {3, 4};
+  m.face_indices = {0, 1, 2, 1, 0, 3, 4};
+  Subdivide_options o;
+  o.scheme = "loop";
+  o.triangulate = true;
+  Result<Mesh_buffers> r = subdivide_mesh(m, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
+  EXPECT_EQ(r.status.message,
+            "face 1 (4 vertices) could not be triangulated: it is degenerate "
+            "(no area) or self-intersecting; loop needs triangles");
+
+  // A pentagon whose second corner lies far beyond the others: its outline
+  // crosses itself, which the constrained Delaunay triangulation refuses.
+  const Result<Mesh_buffers> pentagon = read_mesh(
+      "OFF\n5 1 0\n1 1 0\n2 12147483648 0\n2 2 0\n1.5 2.25 0\n1 2 0\n"
+      "5 0 1 2 3 4\n",
+      Mesh_format::off);
+  ASSERT_TRUE(pentagon.ok()) << pentagon.status.message;
+  o.scheme = "sqrt3";
+  r = subdivide_mesh(pentagon.value, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.message,
+            "face 0 (5 vertices) could not be triangulated: it is degenerate "
+            "(no area) or self-intersecting; sqrt3 needs triangles");
+}
+
 }  // namespace
 }  // namespace subdivlab

@@ -611,6 +611,27 @@ Status check_two_valent_vertices(const Mesh& mesh,
   return Status::success();
 }
 
+/// Triangulates every polygon as triangulate_faces does (CGAL's
+/// triangulate_face, face by face), naming the first it refuses: one whose
+/// normal is zero (degenerate), or past 4 vertices one whose projection is
+/// not a simple polygon. Faces are numbered as in the input buffers.
+Status triangulate_all(Mesh& mesh, const std::string& scheme) {
+  std::vector<Mesh::Face_index> polygons;
+  for (Mesh::Face_index f : mesh.faces())
+    if (mesh.degree(f) > 3) polygons.push_back(f);
+  for (Mesh::Face_index f : polygons) {
+    const std::size_t degree = mesh.degree(f);
+    if (CGAL::Polygon_mesh_processing::triangulate_face(f, mesh)) continue;
+    return Status::error(
+        Status_code::invalid_mesh,
+        "face " + std::to_string(f.idx()) + " (" + std::to_string(degree) +
+            " vertices) could not be triangulated: it is degenerate (no "
+            "area) or self-intersecting; " +
+            scheme + " needs triangles");
+  }
+  return Status::success();
+}
+
 /// Builds and checks the mesh the steps start from: valid, and triangles for
 /// the schemes that need them (triangulated here if asked to).
 Status prepare(const Mesh_buffers& in, const Subdivide_options& options,
@@ -624,11 +645,8 @@ Status prepare(const Mesh_buffers& in, const Subdivide_options& options,
   counts = counts_of(mesh);
   if (needs_triangles(options) && counts.non_triangles > 0) {
     if (!options.triangulate) return not_triangles(options.scheme, counts);
-    if (!CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
-      return Status::error(Status_code::invalid_mesh,
-                           "a face could not be triangulated (is it "
-                           "degenerate?); " +
-                               options.scheme + " needs triangles");
+    s = triangulate_all(mesh, options.scheme);
+    if (!s.ok()) return s;
     collect_removed(mesh);
     mesh.shrink_to_fit();
     counts = counts_of(mesh);
