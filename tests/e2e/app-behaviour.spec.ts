@@ -247,6 +247,33 @@ test('keyboard: shortcuts, every control reachable with Tab and named', async ({
   });
 });
 
+test('keyboard: a sample chosen from the Samples menu hands focus back to the menu', async ({ app }) => {
+  await app.open();
+  const menu = app.byTestId('gallery').locator('summary');
+  await menu.focus();
+  await app.page.keyboard.press('Enter');
+  await expect(app.byTestId('gallery.cube')).toBeVisible();
+  await app.page.keyboard.press('Tab');
+  await expect(app.byTestId('gallery.cube')).toBeFocused();
+  await app.page.keyboard.press('Enter');
+  await expect(app.byTestId('facts.model')).toHaveText('cube.off');
+  await expect(app.byTestId('gallery.cube')).toBeHidden();
+  // Not lost on <body>: the next Tab goes on from the menu, Enter opens it again.
+  await expect(menu).toBeFocused();
+  await app.page.keyboard.press('Enter');
+  await expect(app.byTestId('gallery.tetrahedron')).toBeVisible();
+  await app.page.keyboard.press('Escape');
+  await test.step('the Export menu too', async () => {
+    const exportMenu = app.byTestId('export-panel').locator('summary');
+    await exportMenu.focus();
+    await app.page.keyboard.press('Enter');
+    await app.byTestId('export.off').focus();
+    const [download] = await Promise.all([app.page.waitForEvent('download'), app.page.keyboard.press('Enter')]);
+    expect(download.suggestedFilename()).toBe('cube-catmull-clark-L0.off');
+    await expect(exportMenu).toBeFocused();
+  });
+});
+
 test('Ctrl+C copies the view as a PNG image', async ({ app, context }) => {
   await context.grantPermissions(['clipboard-read', 'clipboard-write']);
   await app.open();
@@ -281,6 +308,21 @@ for (const [device, viewport] of [
     const overflow = await app.page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
     expect(overflow).toBeLessThanOrEqual(0);
     await expect(app.byTestId('controls.subdivide')).toBeInViewport();
+    await test.step('the panels sit one below the other without empty gaps', async () => {
+      const gaps = await app.page.evaluate(() => {
+        const boxes = [...document.querySelectorAll<HTMLElement>('.sidebar > *')]
+          .filter((e) => e.offsetParent !== null)
+          .map((e) => e.getBoundingClientRect());
+        // For each panel, the distance up to the nearest panel above it in the same column.
+        return boxes.map((b) => {
+          const above = boxes.filter((a) => a.bottom <= b.top && a.left < b.right && b.left < a.right);
+          return above.length === 0 ? 0 : b.top - Math.max(...above.map((a) => a.bottom));
+        });
+      });
+      expect(gaps.length).toBeGreaterThanOrEqual(4);
+      // The sidebar's gap is 8 px.
+      for (const gap of gaps) expect(gap).toBeLessThanOrEqual(9);
+    });
     await app.snapshot(`05-layout-${device}`);
   });
 }
