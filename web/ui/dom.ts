@@ -55,7 +55,11 @@ export function dropdown(label: string, testId: string, ...children: Node[]): HT
   const body = el('div', { className: 'dropdown-body' }, ...children);
   const details = el('details', { testId, className: 'dropdown' }, el('summary', { text: label }), body);
   body.addEventListener('click', (event) => {
-    if ((event.target as HTMLElement).closest('button')) details.open = false;
+    if (!(event.target as HTMLElement).closest('button')) return;
+    // The chosen button disappears with the menu: give keyboard focus back to the menu's button.
+    const hadFocus = body.contains(document.activeElement);
+    details.open = false;
+    if (hadFocus) details.querySelector('summary')?.focus();
   });
   // Like a menu, a click elsewhere closes it.
   document.addEventListener('pointerdown', (event) => {
