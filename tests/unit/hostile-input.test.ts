@@ -5,7 +5,7 @@ import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import type { SubdivideOptions } from '../../web/core/mesh';
-import { exportMesh, meshFacts, parseMesh, subdivide } from '../../web/core/subdiv-core';
+import { exportMesh, meshFacts, parseMesh, predictSize, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
 import { FIXTURES_DIR, loadFixture } from './test-helpers';
 
@@ -61,6 +61,16 @@ describe('level counts beyond 32 bits', () => {
     expect(rest).toBe('');
     expect(line.startsWith('error: cube.off: level 11 of catmull-clark would need about ')).toBe(true);
     expect(line.slice('error: cube.off: '.length)).toMatch(CUBE_LEVEL_11);
+  });
+});
+
+describe('predictions beyond 32 bits', () => {
+  it('predictSize gives level 16 of the cube exactly, not saturated at 4294967295', () => {
+    // Catmull-Clark on the cube: F = 6 * 4^16 quads, E = 2F, V = E - F + 2.
+    const p = predictSize(loadFixture('cube.off'), { scheme: 'catmull-clark', levels: 16 });
+    expect([p.vertices, p.edges, p.faces]).toEqual([25769803778, 51539607552, 25769803776]);
+    // Some hundred bytes per face: far beyond 4 GB.
+    expect(p.peakBytes).toBeGreaterThan(100 * 25769803776);
   });
 });
 

@@ -450,10 +450,10 @@ std::string format_count(double n) {
 /// Surface_mesh numbers halfedges with 32-bit indices.
 constexpr double kMaxHalfedges = 4294967294.0;
 
-std::size_t to_size(double x) {
-  if (!(x < static_cast<double>(std::numeric_limits<std::size_t>::max())))
-    return std::numeric_limits<std::size_t>::max();
-  return static_cast<std::size_t>(x);
+std::uint64_t to_size(double x) {
+  if (!(x < static_cast<double>(std::numeric_limits<std::uint64_t>::max())))
+    return std::numeric_limits<std::uint64_t>::max();
+  return static_cast<std::uint64_t>(x);
 }
 
 /// Memory one step needs, everything included.

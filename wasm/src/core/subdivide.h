@@ -35,9 +35,11 @@ struct Subdivide_options {
 /// Counts predicted for a mesh after `levels` steps of a scheme, and the
 /// peak bytes of the run: the largest of its steps, in practice the last
 /// (CGAL's hosts reserve more than they keep).
+/// 64-bit even under wasm32, whose size_t would saturate a run beyond 4 G
+/// elements or bytes at 4294967295.
 struct Size_prediction {
-  std::size_t vertices = 0, edges = 0, faces = 0;
-  std::size_t peak_bytes = 0;
+  std::uint64_t vertices = 0, edges = 0, faces = 0;
+  std::uint64_t peak_bytes = 0;
 };
 
 /// Predicts counts without subdividing. Fails for unknown schemes.
