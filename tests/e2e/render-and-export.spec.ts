@@ -74,8 +74,15 @@ test('control-edge curves: the marked edges of a refined level, drawn and export
   await app.snapshot('06-control-curves');
   await app.byTestId('export-panel').locator('summary').click();
   const svg = await readFile(await (await app.download('export.svg')).path(), 'utf8');
-  const path = /<path id="control-curves"[^>]* d="([^"]*)"/.exec(svg);
-  expect(path?.[1].split('M').length).toBe(96 + 1);
+  const segments = (id: string) =>
+    (new RegExp(`<path id="${id}"[^>]* d="([^"]*)"`).exec(svg)?.[1].split('M').length ?? 0) - 1;
+  // Curves on the far side go before the faces, which cover them as in the view; the rest on top.
+  const [front, back] = [segments('control-curves'), segments('control-curves-back')];
+  expect(front + back).toBe(96);
+  expect(front).toBeGreaterThan(0);
+  expect(back).toBeGreaterThan(0);
+  expect(svg.indexOf('id="control-curves-back"')).toBeLessThan(svg.indexOf('<g id="faces"'));
+  expect(svg.indexOf('id="control-curves"')).toBeGreaterThan(svg.indexOf('<g id="faces"'));
 });
 
 test('PNG export: signature, ×2 doubles the size, transparent background', async ({ app }) => {
@@ -122,6 +129,10 @@ test('SVG export: one polygon per camera-facing face, back to front, viewBox set
         viewBox: root.getAttribute('viewBox'),
         polygons: doc.querySelectorAll('polygon').length,
         control: doc.querySelector('#control-mesh')?.getAttribute('d')?.split('M').length ?? 0,
+        controlBack: doc.querySelector('#control-mesh-back')?.getAttribute('d')?.split('M').length ?? 0,
+        backBeforeFaces:
+          (doc.querySelector('#control-mesh-back')?.compareDocumentPosition(doc.querySelector('#faces') as Node) ?? 0) &
+          Node.DOCUMENT_POSITION_FOLLOWING,
         // Screen centroid of each polygon, in drawing order.
         centroids: [...doc.querySelectorAll('polygon')].map((p) => {
           const xy = (p.getAttribute('points') ?? '').split(' ').map((pair) => pair.split(',').map(Number));
@@ -168,8 +179,18 @@ test('SVG export: one polygon per camera-facing face, back to front, viewBox set
     expect(svg.polygons).toBe(expected);
     expect(expected).toBeGreaterThan(20);
     expect(expected).toBeLessThan(96);
-    // One move-to per control edge (the leading empty split part counts as the 13th).
-    expect(svg.control).toBe(12 + 1);
+    // One move-to per control edge (the leading empty split part counts as one more in each path).
+    // Edges of a camera-facing cube face are drawn over the surface; the others before it, hidden where it covers them.
+    const eye = (await app.state()).view.position;
+    const frontEdges = new Set(
+      cube.faces
+        .filter((f) => cameraFacingFaces({ positions: cube.positions, faces: [f] }, eye) === 1)
+        .flatMap((f) => f.map((a, k) => [a, f[(k + 1) % f.length]].sort().join('-'))),
+    );
+    expect(frontEdges.size).toBe(9);
+    expect(svg.control - 1).toBe(frontEdges.size);
+    expect(svg.controlBack - 1).toBe(12 - frontEdges.size);
+    expect(svg.backBeforeFaces).toBeTruthy();
 
     // Back to front: match each polygon to its face by screen centroid, then depths must not increase.
     const state = await app.state();

@@ -265,11 +265,14 @@ export class SubdivViewer {
   /** SVG of the view: camera-facing polygons back to front, and the control mesh when shown. */
   exportSvg(transparent = false): string {
     const level = this.requireLevel();
-    const control = this.view.overlay('control') ? this.levels[0].data.buffers : null;
+    const base = this.levels[0].data;
+    const control = this.view.overlay('control')
+      ? { positions: base.buffers.positions, edges: base.buffers.edges, faces: base.mesh }
+      : null;
     const { mesh } = level.data;
     const curves =
       this.view.overlay('curves') && mesh.controlEdges.length > 0
-        ? { positions: mesh.positions, edges: mesh.controlEdges }
+        ? { positions: mesh.positions, edges: mesh.controlEdges, faces: mesh }
         : null;
     return exportSvg({
       mesh,

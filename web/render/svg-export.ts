@@ -2,7 +2,10 @@
  * SVG of the current view, drawn as a painter would: the polygons that face
  * the camera, sorted back to front by their centroid's depth, each filled
  * with a flat Lambert shade and stroked with its edges, then the control-mesh
- * overlay on top. Polygons stay polygons (one <polygon> per face). three's
+ * overlay and the control-edge curves. A line that lies on no camera-facing
+ * polygon of its mesh is drawn before the faces, so that the surface covers
+ * it where it passes behind, as the depth-tested view does; the other lines
+ * go on top. Polygons stay polygons (one <polygon> per face). three's
  * SVGRenderer draws triangles, so the projection is done here.
  */
 import { Color, type PerspectiveCamera, Vector3 } from 'three';
@@ -13,6 +16,11 @@ import { LIGHT_IN_CAMERA, LIGHT_SHARES, VIEW_COLORS } from './scene-view';
 export interface LineSet {
   positions: ArrayLike<number>;
   edges: ArrayLike<number>;
+  /**
+   * The polygons the lines lie on (indices into `positions`). Without them
+   * every line is drawn over the faces.
+   */
+  faces?: { faceSizes: ArrayLike<number>; faceIndices: ArrayLike<number> };
 }
 
 export interface SvgExportInput {
@@ -112,16 +120,65 @@ export function exportSvg(input: SvgExportInput): string {
     `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}">`,
   );
   if (input.background) out.push(`<rect width="${width}" height="${height}" fill="${VIEW_COLORS.background}"/>`);
+  // Lines behind the surface first (ids ending in -back), the faces over them, then the lines in front.
+  const overlays = [
+    { lines: input.curves, id: 'control-curves', color: VIEW_COLORS.curves },
+    { lines: input.control, id: 'control-mesh', color: VIEW_COLORS.control },
+  ].flatMap(({ lines, id, color }) => (lines ? [{ ...splitByFacing(lines, camera), id, color }] : []));
+  for (const o of overlays) out.push(linePath(o.back, `${o.id}-back`, o.color, camera, width, height));
   out.push(`<g id="faces" stroke="${VIEW_COLORS.edges}" stroke-width="0.6" stroke-linejoin="round">`);
   for (const f of faces) out.push(`<polygon points="${f.points}" fill="${f.fill}"/>`);
   out.push('</g>');
-  if (input.curves) out.push(linePath(input.curves, 'control-curves', VIEW_COLORS.curves, camera, width, height));
-  if (input.control) out.push(linePath(input.control, 'control-mesh', VIEW_COLORS.control, camera, width, height));
+  for (const o of overlays) out.push(linePath(o.front, o.id, o.color, camera, width, height));
   out.push('</svg>');
   return `${out.join('\n')}\n`;
 }
 
-/** Line segments as one path (id `id`), drawn over the faces. */
+/**
+ * Splits `lines` into those on a camera-facing polygon of `lines.faces`
+ * (front) and the rest (back). Without faces every line is in front.
+ */
+function splitByFacing(lines: LineSet, camera: PerspectiveCamera): { front: LineSet; back: LineSet } {
+  const { positions, edges, faces } = lines;
+  if (!faces) return { front: lines, back: { positions, edges: [] } };
+  const vertexCount = positions.length / 3;
+  const key = (a: number, b: number) => Math.min(a, b) * vertexCount + Math.max(a, b);
+  const onFront = new Set<number>();
+  const normal = new Vector3();
+  const centroid = new Vector3();
+  let offset = 0;
+  for (const size of Array.from(faces.faceSizes)) {
+    normal.set(0, 0, 0);
+    centroid.set(0, 0, 0);
+    for (let k = 0; k < size; k++) {
+      const a = faces.faceIndices[offset + k];
+      const b = faces.faceIndices[offset + ((k + 1) % size)];
+      const [ax, ay, az] = [positions[3 * a], positions[3 * a + 1], positions[3 * a + 2]];
+      const [bx, by, bz] = [positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]];
+      normal.x += (ay - by) * (az + bz);
+      normal.y += (az - bz) * (ax + bx);
+      normal.z += (ax - bx) * (ay + by);
+      centroid.x += ax;
+      centroid.y += ay;
+      centroid.z += az;
+    }
+    centroid.divideScalar(size);
+    if (normal.lengthSq() > 0 && facesCamera(camera, centroid, normal)) {
+      for (let k = 0; k < size; k++) {
+        onFront.add(key(faces.faceIndices[offset + k], faces.faceIndices[offset + ((k + 1) % size)]));
+      }
+    }
+    offset += size;
+  }
+  const front: number[] = [];
+  const back: number[] = [];
+  for (let e = 0; e + 1 < edges.length; e += 2) {
+    (onFront.has(key(edges[e], edges[e + 1])) ? front : back).push(edges[e], edges[e + 1]);
+  }
+  return { front: { positions, edges: front }, back: { positions, edges: back } };
+}
+
+/** Line segments as one path (id `id`). */
 function linePath(
   lines: LineSet,
   id: string,
