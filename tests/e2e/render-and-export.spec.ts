@@ -62,6 +62,11 @@ test('control-edge curves: the marked edges of a refined level, drawn and export
   await app.load('cube.off', CUBE);
   const toggle = app.byTestId('controls.overlay-curves');
   await expect(toggle).toBeDisabled();
+  await test.step('E does not switch on curves that are not there', async () => {
+    await app.page.keyboard.press('e');
+    expect((await app.state()).overlays.curves).toBe(false);
+    await expect(toggle).not.toBeChecked();
+  });
   for (let i = 0; i < 3; i++) await app.subdivide();
   // Every cube edge is split in two at each step: 12·2³ marked edges at level 3.
   expect((await app.state()).facts?.controlEdges).toBe(96);

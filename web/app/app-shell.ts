@@ -10,7 +10,7 @@ import { CancelledError } from '../core/worker-client';
 import { nextRenderMode } from '../render/render-mode';
 import { parseViewState, type ViewState } from '../render/view-state';
 import { ConfirmDialog } from '../ui/confirm-dialog';
-import { DisplayPanel } from '../ui/display-panel';
+import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
 import { button, el } from '../ui/dom';
 import { DropZone } from '../ui/drop-zone';
 import { ErrorBanner } from '../ui/error-banner';
@@ -172,7 +172,12 @@ export class AppShell {
       {
         subdivide: () => void this.subdivide(),
         cycleRenderMode: () => this.viewer.setRenderMode(nextRenderMode(this.viewer.state.renderMode)),
-        toggleOverlay: (name) => this.viewer.setOverlay(name, !this.viewer.state.overlays[name]),
+        toggleOverlay: (name) => {
+          // As the disabled checkbox: a key may switch an unavailable overlay off, never on.
+          const state = this.viewer.state;
+          const on = !state.overlays[name];
+          if (!on || overlayAvailable(name, state)) this.viewer.setOverlay(name, on);
+        },
         fit: () => this.viewer.fitView(),
         stepLevel: (delta) => this.viewer.setLevel(this.viewer.state.level + delta),
         open: () => this.fileInput.click(),

@@ -18,6 +18,15 @@ const OVERLAYS: readonly { name: OverlayName; label: string; key: string }[] = [
   { name: 'curves', label: 'Control-edge curves', key: 'e' },
 ];
 
+/**
+ * Whether overlay `name` can be switched on for `state`: the curves exist
+ * only where the core marked control edges (primal schemes).
+ */
+export function overlayAvailable(name: OverlayName, state: ViewerState): boolean {
+  if (name !== 'curves') return true;
+  return state.facts !== null && state.facts.controlEdges > 0;
+}
+
 export class DisplayPanel {
   readonly element: HTMLElement;
   private readonly mode: HTMLSelectElement;
@@ -59,9 +68,7 @@ export class DisplayPanel {
   update(state: ViewerState, hasSavedView: boolean): void {
     this.mode.value = state.renderMode;
     for (const [name, input] of this.toggles) input.checked = state.overlays[name];
-    // Curves exist only where the core marked control edges (primal schemes).
-    const curves = this.toggles.get('curves');
-    if (curves) curves.disabled = !state.facts || state.facts.controlEdges === 0;
+    for (const [name, input] of this.toggles) input.disabled = !overlayAvailable(name, state);
     this.restore.disabled = !hasSavedView;
   }
 }
