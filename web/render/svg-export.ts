@@ -86,24 +86,8 @@ export function exportSvg(input: SvgExportInput): string {
   for (const size of mesh.faceSizes) {
     const corners = mesh.faceIndices.subarray(offset, offset + size);
     offset += size;
-    // Newell's normal: exact for planar polygons, a good average otherwise.
-    normal.set(0, 0, 0);
-    centroid.set(0, 0, 0);
-    let clipped = false;
-    for (let k = 0; k < size; k++) {
-      const a = corners[k];
-      const b = corners[(k + 1) % size];
-      const [ax, ay, az] = [positions[3 * a], positions[3 * a + 1], positions[3 * a + 2]];
-      const [bx, by, bz] = [positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]];
-      normal.x += (ay - by) * (az + bz);
-      normal.y += (az - bz) * (ax + bx);
-      normal.z += (ax - bx) * (ay + by);
-      centroid.x += ax;
-      centroid.y += ay;
-      centroid.z += az;
-      if (behind[a]) clipped = true;
-    }
-    centroid.divideScalar(size);
+    polygonNormalAndCentroid(positions, corners, 0, size, normal, centroid);
+    const clipped = corners.some((c) => behind[c] === 1);
     if (clipped || normal.lengthSq() === 0 || !facesCamera(camera, centroid, normal)) continue;
     normal.normalize();
     const shade = LIGHT_SHARES.ambient + LIGHT_SHARES.directional * Math.max(0, normal.dot(lightDir));
@@ -135,6 +119,36 @@ export function exportSvg(input: SvgExportInput): string {
 }
 
 /**
+ * Newell's normal of the polygon indices[offset .. offset + size) (exact for
+ * planar polygons, a good average otherwise; not normalised) and its vertex
+ * centroid.
+ */
+function polygonNormalAndCentroid(
+  positions: ArrayLike<number>,
+  indices: ArrayLike<number>,
+  offset: number,
+  size: number,
+  normal: Vector3,
+  centroid: Vector3,
+): void {
+  normal.set(0, 0, 0);
+  centroid.set(0, 0, 0);
+  for (let k = 0; k < size; k++) {
+    const a = indices[offset + k];
+    const b = indices[offset + ((k + 1) % size)];
+    const [ax, ay, az] = [positions[3 * a], positions[3 * a + 1], positions[3 * a + 2]];
+    const [bx, by, bz] = [positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]];
+    normal.x += (ay - by) * (az + bz);
+    normal.y += (az - bz) * (ax + bx);
+    normal.z += (ax - bx) * (ay + by);
+    centroid.x += ax;
+    centroid.y += ay;
+    centroid.z += az;
+  }
+  centroid.divideScalar(size);
+}
+
+/**
  * Splits `lines` into those on a camera-facing polygon of `lines.faces`
  * (front) and the rest (back). Without faces every line is in front.
  */
@@ -148,21 +162,7 @@ function splitByFacing(lines: LineSet, camera: PerspectiveCamera): { front: Line
   const centroid = new Vector3();
   let offset = 0;
   for (const size of Array.from(faces.faceSizes)) {
-    normal.set(0, 0, 0);
-    centroid.set(0, 0, 0);
-    for (let k = 0; k < size; k++) {
-      const a = faces.faceIndices[offset + k];
-      const b = faces.faceIndices[offset + ((k + 1) % size)];
-      const [ax, ay, az] = [positions[3 * a], positions[3 * a + 1], positions[3 * a + 2]];
-      const [bx, by, bz] = [positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]];
-      normal.x += (ay - by) * (az + bz);
-      normal.y += (az - bz) * (ax + bx);
-      normal.z += (ax - bx) * (ay + by);
-      centroid.x += ax;
-      centroid.y += ay;
-      centroid.z += az;
-    }
-    centroid.divideScalar(size);
+    polygonNormalAndCentroid(positions, faces.faceIndices, offset, size, normal, centroid);
     if (normal.lengthSq() > 0 && facesCamera(camera, centroid, normal)) {
       for (let k = 0; k < size; k++) {
         onFront.add(key(faces.faceIndices[offset + k], faces.faceIndices[offset + ((k + 1) % size)]));
