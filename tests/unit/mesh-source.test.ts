@@ -1,5 +1,5 @@
 /**
- * The web app's mesh sources (web/app/mesh-source.ts): format detection and
+ * The web app's mesh sources (web/viewer/mesh-source.ts): format detection and
  * the ?src= download rules (http/https only, size limit enforced while
  * reading, even when the server sends no Content-Length). A real HTTP server
  * on a loopback port serves the bodies.
@@ -7,7 +7,7 @@
 import { createServer, type Server } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { detectFormat, fetchMesh, LoadError } from '../../web/app/mesh-source';
+import { detectFormat, fetchMesh, LoadError } from '../../web/viewer/mesh-source';
 
 const CUBE = 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n';
 

@@ -1,14 +1,6 @@
-/** The gallery's sample meshes, served from public/meshes/ (CGAL's are extracted there at set-up). */
-export interface Sample {
-  /** Used in test ids (`gallery.cube`). */
-  id: string;
-  /** Path relative to the page. */
-  path: string;
-  label: string;
-  /** One line: what it is good for. */
-  note: string;
-}
+import type { Sample } from '../ui/gallery';
 
+/** The gallery's sample meshes, served from public/meshes/ (CGAL's are extracted there at set-up). */
 export const SAMPLES: readonly Sample[] = [
   { id: 'cube', path: 'meshes/cube.off', label: 'Cube', note: '6 quads, closed' },
   { id: 'tetrahedron', path: 'meshes/tetrahedron.off', label: 'Tetrahedron', note: '4 triangles, closed' },

@@ -22,3 +22,31 @@ export function parseViewState(text: string | null): ViewState | null {
   }
   return null;
 }
+
+/** Shortest decimal that keeps `x` to 6 significant digits ("1.5", "-0.000123"). */
+function compact(x: number): string {
+  const s = Number(x.toPrecision(6)).toString();
+  return s === '-0' ? '0' : s;
+}
+
+/**
+ * The camera as a short string for links and attributes: nine numbers,
+ * position, target and up, separated by commas (6 significant digits),
+ * e.g. `2.1,1.7,3.8,0,0,0,0,1,0`.
+ */
+export function formatViewString(view: ViewState): string {
+  return [...view.position, ...view.target, ...view.up].map(compact).join(',');
+}
+
+/** Reads {@link formatViewString}'s form; null unless it is nine finite numbers with a usable up vector. */
+export function parseViewString(text: string | null | undefined): ViewState | null {
+  if (!text) return null;
+  const parts = text.split(',');
+  if (parts.length !== 9 || parts.some((p) => p.trim() === '')) return null;
+  const n = parts.map(Number);
+  if (!n.every(Number.isFinite)) return null;
+  const view: ViewState = { position: [n[0], n[1], n[2]], target: [n[3], n[4], n[5]], up: [n[6], n[7], n[8]] };
+  const eye = view.position.map((p, i) => p - view.target[i]);
+  if (Math.hypot(...eye) === 0 || Math.hypot(...view.up) === 0) return null;
+  return view;
+}

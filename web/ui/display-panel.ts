@@ -1,6 +1,7 @@
 /** Render mode menu, overlay toggles, and the view buttons (fit, save, restore). */
-import type { ViewerState } from '../app/subdiv-viewer';
+
 import { type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
+import type { ViewerState } from '../viewer/subdiv-viewer';
 import { button, el, section, uniqueId } from './dom';
 
 export interface DisplayPanelHandlers {

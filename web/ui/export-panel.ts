@@ -1,5 +1,5 @@
 /** Export: PNG (×1/×2/×4, optional transparent background), copy image, SVG, OFF, OBJ. */
-import type { ViewerState } from '../app/subdiv-viewer';
+import type { ViewerState } from '../viewer/subdiv-viewer';
 import { button, dropdown, el, uniqueId } from './dom';
 
 export interface ExportPanelHandlers {

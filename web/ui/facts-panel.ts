@@ -1,6 +1,7 @@
 /** Facts of the shown level, as the core computed them. */
-import type { ViewerState } from '../app/subdiv-viewer';
+
 import type { MeshFacts } from '../core/mesh';
+import type { ViewerState } from '../viewer/subdiv-viewer';
 import { el } from './dom';
 
 const ROWS: readonly { key: string; label: string; value: (f: MeshFacts) => string }[] = [

@@ -1,6 +1,16 @@
 /** The gallery of sample meshes: one button per sample. */
-import type { Sample } from '../app/samples';
 import { dropdown, el } from './dom';
+
+/** A sample mesh the gallery offers. */
+export interface Sample {
+  /** Used in test ids (`gallery.cube`). */
+  id: string;
+  /** Path relative to the page. */
+  path: string;
+  label: string;
+  /** One line: what it is good for. */
+  note: string;
+}
 
 export function createGallery(samples: readonly Sample[], onPick: (sample: Sample) => void): HTMLElement {
   const list = el('ul', { className: 'gallery' });

@@ -1,5 +1,5 @@
 /** Subdivide (+1 level), Reset, and a scrubber over the computed levels 0..N. */
-import type { ViewerState } from '../app/subdiv-viewer';
+import type { ViewerState } from '../viewer/subdiv-viewer';
 import { button, el, section, uniqueId } from './dom';
 
 export interface LevelPanelHandlers {

@@ -3,7 +3,7 @@
  * 200 ms (shorter work would just flicker), with elapsed time and Cancel.
  * A WASM call cannot report progress, so the bar is indeterminate.
  */
-import type { BusyState } from '../app/subdiv-viewer';
+import type { BusyState } from '../viewer/subdiv-viewer';
 import { button, el } from './dom';
 
 export const PROGRESS_DELAY_MS = 200;

@@ -7,7 +7,6 @@
  * core itself (the `check` handler), so the panel shows the core's own
  * message for a weight that is not finite or a stencil that does not sum to 1.
  */
-import { saveBlob } from '../app/file-names';
 import {
   parseRuleSet,
   parseRuleSetText,
@@ -19,6 +18,7 @@ import {
 } from '../core/rule-set';
 import { button, el, uniqueId } from './dom';
 import { formulaError, getAt, ruleFileName, setAt, type WeightSpec, weightGroups, weightOf } from './rule-fields';
+import { saveBlob } from './save-blob';
 
 export interface RulesPanelHandlers {
   /** Judges a rule set as the core does (finite weights, stencils summing to 1); rejects with its message. */
@@ -44,16 +44,6 @@ const HOSTS: Record<RuleHost, string> = {
   dqq: 'DQQ — dual quad quadrisection (Doo-Sabin-like); any polygons',
   sqrt3: '√3 — Kobbelt’s triangle trisection with edge flips; needs triangles',
 };
-
-/** The host's short name: PQQ, PTQ, DQQ, √3. */
-export function hostLabel(host: RuleHost): string {
-  return host === 'sqrt3' ? '√3' : host.toUpperCase();
-}
-
-/** The host refuses faces other than triangles. */
-export function hostNeedsTriangles(host: RuleHost): boolean {
-  return host === 'ptq' || host === 'sqrt3';
-}
 
 interface Field extends WeightSpec {
   input: HTMLInputElement;

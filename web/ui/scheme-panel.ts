@@ -3,9 +3,10 @@
  * schemes that need triangles a note and a "Triangulate first" option when
  * the loaded mesh has other faces, and quad-triangle's "Fixed boundary".
  */
-import { schemeInfo } from '../app/scheme-info';
-import type { ViewerState } from '../app/subdiv-viewer';
+
 import type { SchemeName } from '../core/mesh';
+import { schemeInfo } from '../viewer/scheme-info';
+import type { ViewerState } from '../viewer/subdiv-viewer';
 import { el, section, uniqueId } from './dom';
 
 export interface SchemePanelHandlers {

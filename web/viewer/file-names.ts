@@ -10,17 +10,3 @@ export function modelStem(modelName: string | null): string {
 export function exportFileName(modelName: string | null, scheme: string, level: number, extension: string): string {
   return `${modelStem(modelName)}-${scheme}-L${level}.${extension}`;
 }
-
-/** Starts a download of `blob` under `name`. */
-export function saveBlob(blob: Blob, name: string): void {
-  const url = URL.createObjectURL(blob);
-  const link = document.createElement('a');
-  link.href = url;
-  link.download = name;
-  link.style.display = 'none';
-  document.body.append(link);
-  link.click();
-  link.remove();
-  // Revoke later: the download reads the URL after this task.
-  setTimeout(() => URL.revokeObjectURL(url), 60_000);
-}

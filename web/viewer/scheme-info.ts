@@ -1,5 +1,6 @@
 /** What the app says about each scheme the core offers. */
 import type { SchemeName } from '../core/mesh';
+import type { RuleHost } from '../core/rule-set';
 
 export interface SchemeInfo {
   /** Name shown in the picker. */
@@ -12,7 +13,7 @@ export interface SchemeInfo {
   needsRules?: boolean;
 }
 
-const INFO: Record<string, SchemeInfo> = {
+const INFO: Record<SchemeName, SchemeInfo> = {
   'catmull-clark': {
     label: 'Catmull-Clark',
     description: 'Quad refinement (PQQ): every face splits into quads; smooth, approximating. Any polygons.',
@@ -56,7 +57,27 @@ const INFO: Record<string, SchemeInfo> = {
   },
 };
 
+/** Every scheme, in the order the core lists them. */
+export const SCHEME_NAMES = Object.keys(INFO) as readonly SchemeName[];
+
+/** True when `name` is one of {@link SCHEME_NAMES}. */
+export function isSchemeName(name: string): name is SchemeName {
+  return Object.hasOwn(INFO, name);
+}
+
 /** Info for a scheme name; names the app does not know yet get a neutral entry. */
 export function schemeInfo(name: SchemeName | string): SchemeInfo {
-  return INFO[name] ?? { label: name, description: `The core's ${name} scheme.`, needsTriangles: false };
+  return isSchemeName(name)
+    ? INFO[name]
+    : { label: name, description: `The core's ${name} scheme.`, needsTriangles: false };
+}
+
+/** The host's short name: PQQ, PTQ, DQQ, √3. */
+export function hostLabel(host: RuleHost): string {
+  return host === 'sqrt3' ? '√3' : host.toUpperCase();
+}
+
+/** The host refuses faces other than triangles. */
+export function hostNeedsTriangles(host: RuleHost): boolean {
+  return host === 'ptq' || host === 'sqrt3';
 }

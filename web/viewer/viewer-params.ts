@@ -1,0 +1,137 @@
+/**
+ * The state a viewer can be started in, as text: the app's URL hash, the
+ * iframe route's query and the `<subdiv-viewer>` attributes all read and
+ * write it here, so a share link, an embed snippet and an attribute mean
+ * the same thing. Unknown keys are ignored; a bad value is left out and
+ * named in `problems`, never guessed.
+ */
+import type { SchemeName } from '../core/mesh';
+import { OVERLAY_NAMES, type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
+import { formatViewString, parseViewString, type ViewState } from '../render/view-state';
+import { isSchemeName } from './scheme-info';
+
+/** Which controls an embedded viewer shows: none, a level stepper and scheme menu, or all of them. */
+export type ControlsMode = 'none' | 'minimal' | 'full';
+
+export const CONTROLS_MODES: readonly ControlsMode[] = ['none', 'minimal', 'full'];
+
+/** Most levels a link or attribute may ask for; the core still refuses a run that would not fit. */
+export const MAX_PARAM_LEVELS = 8;
+
+export interface ViewerParams {
+  /** URL of the mesh (http or https, absolute or relative to the page). */
+  src?: string;
+  scheme?: SchemeName;
+  /** Levels to compute after loading. */
+  levels?: number;
+  renderMode?: RenderMode;
+  overlays?: Partial<Record<OverlayName, boolean>>;
+  view?: ViewState;
+  /** URL of a rule-set JSON (scheme `custom`). */
+  rules?: string;
+  controls?: ControlsMode;
+}
+
+/** Parameter names in links; the element's attributes use the same names, except `render-mode` for `mode`. */
+export const PARAM_KEYS = {
+  src: 'src',
+  scheme: 'scheme',
+  levels: 'levels',
+  renderMode: 'mode',
+  view: 'view',
+  rules: 'rules',
+  controls: 'controls',
+} as const;
+
+/** The link/attribute name of each overlay. */
+export const OVERLAY_KEYS: Record<OverlayName, string> = {
+  control: 'control-mesh',
+  curves: 'control-edges',
+  bbox: 'bbox',
+};
+
+/** "1", "true", "" (a bare attribute) or "on" mean on; "0", "false", "off" mean off. */
+export function parseFlag(value: string): boolean | null {
+  const v = value.trim().toLowerCase();
+  if (v === '' || v === '1' || v === 'true' || v === 'on' || v === 'yes') return true;
+  if (v === '0' || v === 'false' || v === 'off' || v === 'no') return false;
+  return null;
+}
+
+/** Reads `levels`: a whole number from 0 to {@link MAX_PARAM_LEVELS}. */
+export function parseLevels(value: string): number | null {
+  if (!/^\s*\d+\s*$/.test(value)) return null;
+  const n = Number(value);
+  return n <= MAX_PARAM_LEVELS ? n : null;
+}
+
+export interface ParsedParams {
+  params: ViewerParams;
+  /** One sentence per value that was left out. */
+  problems: string[];
+}
+
+/** Reads parameters from a query or hash (`a=1&b=2`, with or without the leading `?` or `#`). */
+export function parseViewerParams(text: string | URLSearchParams): ParsedParams {
+  const query = typeof text === 'string' ? new URLSearchParams(text.replace(/^[?#]/, '')) : text;
+  const params: ViewerParams = {};
+  const problems: string[] = [];
+  const get = (key: string) => query.get(key);
+  const src = get(PARAM_KEYS.src);
+  if (src) params.src = src;
+  const scheme = get(PARAM_KEYS.scheme);
+  if (scheme !== null) {
+    if (isSchemeName(scheme)) params.scheme = scheme;
+    else problems.push(`Unknown scheme "${scheme}".`);
+  }
+  const levels = get(PARAM_KEYS.levels);
+  if (levels !== null) {
+    const n = parseLevels(levels);
+    if (n === null) problems.push(`levels must be a whole number from 0 to ${MAX_PARAM_LEVELS}, not "${levels}".`);
+    else params.levels = n;
+  }
+  const mode = get(PARAM_KEYS.renderMode);
+  if (mode !== null) {
+    const known = RENDER_MODES.find((m) => m.mode === mode);
+    if (known) params.renderMode = known.mode;
+    else problems.push(`Unknown render mode "${mode}" (${RENDER_MODES.map((m) => m.mode).join(', ')}).`);
+  }
+  for (const name of OVERLAY_NAMES) {
+    const value = get(OVERLAY_KEYS[name]);
+    if (value === null) continue;
+    const on = parseFlag(value);
+    if (on === null) problems.push(`${OVERLAY_KEYS[name]} must be 1 or 0, not "${value}".`);
+    else params.overlays = { ...params.overlays, [name]: on };
+  }
+  const view = get(PARAM_KEYS.view);
+  if (view !== null) {
+    const parsed = parseViewString(view);
+    if (parsed) params.view = parsed;
+    else problems.push('view must be nine numbers: camera position, target and up.');
+  }
+  const rules = get(PARAM_KEYS.rules);
+  if (rules) params.rules = rules;
+  const controls = get(PARAM_KEYS.controls);
+  if (controls !== null) {
+    if ((CONTROLS_MODES as readonly string[]).includes(controls)) params.controls = controls as ControlsMode;
+    else problems.push(`controls must be none, minimal or full, not "${controls}".`);
+  }
+  return { params, problems };
+}
+
+/** Writes parameters in a fixed order, leaving out what is not set. */
+export function formatViewerParams(params: ViewerParams): URLSearchParams {
+  const query = new URLSearchParams();
+  if (params.src) query.set(PARAM_KEYS.src, params.src);
+  if (params.scheme) query.set(PARAM_KEYS.scheme, params.scheme);
+  if (params.levels !== undefined) query.set(PARAM_KEYS.levels, String(params.levels));
+  if (params.renderMode) query.set(PARAM_KEYS.renderMode, params.renderMode);
+  for (const name of OVERLAY_NAMES) {
+    const on = params.overlays?.[name];
+    if (on !== undefined) query.set(OVERLAY_KEYS[name], on ? '1' : '0');
+  }
+  if (params.rules) query.set(PARAM_KEYS.rules, params.rules);
+  if (params.view) query.set(PARAM_KEYS.view, formatViewString(params.view));
+  if (params.controls) query.set(PARAM_KEYS.controls, params.controls);
+  return query;
+}
