@@ -71,6 +71,8 @@ export class SceneView {
   private readonly visibilityObserver: IntersectionObserver;
   /** Off screen (e.g. one of several embeds scrolled away): nothing is drawn. */
   private onScreen = true;
+  /** Called after the camera moved (pointer, keys, fit or setView). */
+  onViewChange: (() => void) | null = null;
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = new WebGLRenderer({ antialias: true, alpha: true });
@@ -122,6 +124,7 @@ export class SceneView {
     this.controls.addEventListener('change', () => {
       this.updateClipping();
       this.dirty = true;
+      this.onViewChange?.();
     });
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
@@ -207,6 +210,7 @@ export class SceneView {
     this.updateClipping();
     this.controls.update();
     this.dirty = true;
+    this.onViewChange?.();
   }
 
   /** The current viewpoint. */
@@ -225,6 +229,7 @@ export class SceneView {
     this.updateClipping();
     this.controls.update();
     this.dirty = true;
+    this.onViewChange?.();
   }
 
   /**
@@ -268,6 +273,7 @@ export class SceneView {
     this.updateClipping();
     this.controls.update();
     this.dirty = true;
+    this.onViewChange?.();
   }
 
   /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */

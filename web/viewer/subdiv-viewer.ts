@@ -85,6 +85,7 @@ export class SubdivViewer {
   private schemeOptions: SchemeOptions = {};
   private busyState: BusyState | null = null;
   private readonly listeners = new Set<(state: ViewerState) => void>();
+  private readonly viewListeners = new Set<(view: ViewState) => void>();
   private memoryBudget: number;
   private readonly confirmLargeStep: (info: LargeStepInfo) => Promise<boolean>;
   /** Bumped by load/reset/scheme changes so a step that finishes late is dropped. */
@@ -100,6 +101,11 @@ export class SubdivViewer {
     this.confirmLargeStep = options.confirmLargeStep ?? (async () => false);
     this.view = new SceneView(container);
     if (options.renderMode) this.view.setRenderMode(options.renderMode);
+    this.view.onViewChange = () => {
+      if (this.viewListeners.size === 0) return;
+      const view = this.view.getView();
+      for (const listener of this.viewListeners) listener(view);
+    };
   }
 
   /** Scheme names the core offers (resolves once the WASM core is loaded). */
@@ -125,6 +131,16 @@ export class SubdivViewer {
       },
       busy: this.busyState,
     };
+  }
+
+  /**
+   * Calls `listener` after the camera moved (pointer, keys, fit, setView);
+   * returns the unsubscribe function. Not part of {@link onChange}: it fires
+   * on every frame of a drag.
+   */
+  onViewChange(listener: (view: ViewState) => void): () => void {
+    this.viewListeners.add(listener);
+    return () => this.viewListeners.delete(listener);
   }
 
   /** Calls `listener` after every change; returns the unsubscribe function. */
@@ -312,6 +328,7 @@ export class SubdivViewer {
     this.view.dispose();
     if (this.ownsClient) this.client.dispose();
     this.listeners.clear();
+    this.viewListeners.clear();
   }
 
   private async replaceWith(name: string, produce: () => Promise<LevelData>): Promise<void> {
