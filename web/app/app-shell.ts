@@ -98,7 +98,7 @@ export class AppShell {
       },
     });
     this.rules = new RulesPanel({
-      check: (rules) => checkRulesInCore(this.viewer.client, rules),
+      check: (rules) => checkRulesInCore(this.viewer.core, rules),
       apply: (rules, minLevel) => {
         this.customRules = rules;
         return this.recompute(minLevel);

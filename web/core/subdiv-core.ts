@@ -16,6 +16,8 @@ export interface InitSource {
   wasmBinary?: ArrayBuffer | Uint8Array;
   /** URL of subdivlab.wasm, when it is served from somewhere else (browser or Node). */
   wasmUrl?: string;
+  /** The module already compiled (a page compiles it once and hands it to each worker it starts). */
+  wasmModule?: WebAssembly.Module;
 }
 
 type RawFailure = { ok: false; code: SubdivErrorCode; message: string; line: number };
@@ -59,6 +61,24 @@ async function load(source: InitSource): Promise<void> {
     print: () => {},
     printErr: (text: string) => console.warn(`[subdivlab] ${text}`),
   };
+  if (source.wasmModule) {
+    const compiled = source.wasmModule;
+    // Emscripten's hook for instantiating a module it did not fetch; a failure
+    // here would leave the glue waiting, so it rejects the load instead.
+    let fail: (error: unknown) => void = () => undefined;
+    const failed = new Promise<never>((_, reject) => {
+      fail = reject;
+    });
+    moduleArgs.instantiateWasm = (
+      imports: WebAssembly.Imports,
+      receive: (instance: WebAssembly.Instance, module: WebAssembly.Module) => void,
+    ) => {
+      WebAssembly.instantiate(compiled, imports).then((instance) => receive(instance, compiled), fail);
+      return {};
+    };
+    core = (await Promise.race([createSubdivModule(moduleArgs), failed])) as CoreModule;
+    return;
+  }
   if (source.wasmBinary) {
     moduleArgs.wasmBinary = source.wasmBinary;
   } else if (source.wasmUrl) {

@@ -46,8 +46,8 @@ type Handlers = {
 };
 
 const handlers: Handlers = {
-  async init() {
-    await init();
+  async init({ module }) {
+    await init(module ? { wasmModule: module } : {});
     return schemeNames();
   },
   async parse({ text, format }) {

@@ -1,7 +1,12 @@
 /**
- * Typed, promise-based access to the core running in a Web Worker.
- * Cancelling terminates the worker (a WASM call cannot be interrupted) and
- * starts a fresh one; callers keep whatever results they already have.
+ * Typed, promise-based access to the core running in a Web Worker, shared
+ * by every viewer of a page: one worker, one WebAssembly instance, the
+ * `.wasm` fetched and compiled once on the page and handed to each worker
+ * it starts. Each viewer talks through its own {@link CoreSession}; the
+ * client sends one request at a time, so cancelling a session drops its
+ * queued requests and, only when its request is the one running, restarts
+ * the worker (a WASM call cannot be interrupted) and goes on with the other
+ * sessions' requests.
  */
 import type { Mesh, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
@@ -16,17 +21,12 @@ import type {
 
 export type { LevelData } from './worker-protocol';
 
-/** Rejection of requests that were running or queued when {@link WorkerClient.cancel} was called. */
+/** Rejection of requests that were running or queued when their session was cancelled. */
 export class CancelledError extends Error {
   constructor() {
     super('Cancelled.');
     this.name = 'CancelledError';
   }
-}
-
-interface Pending {
-  resolve: (value: unknown) => void;
-  reject: (error: Error) => void;
 }
 
 /** Makes the worker; the default one is bundled by Vite from subdiv-worker.ts. */
@@ -35,16 +35,61 @@ export type WorkerFactory = () => Worker;
 const defaultFactory: WorkerFactory = () =>
   new Worker(new URL('./subdiv-worker.ts', import.meta.url), { type: 'module', name: 'subdivlab-core' });
 
-/** One worker running the core. Several viewers may share one client. */
-export class WorkerClient {
-  private worker: Worker;
-  private readonly pending = new Map<number, Pending>();
-  private nextId = 1;
-  private schemes: Promise<string[]>;
+/** Where the page fetches the core's `.wasm` (Vite rewrites the URL to the emitted asset). */
+const WASM_URL = new URL('./generated/subdivlab.wasm', import.meta.url).href;
 
-  constructor(private readonly factory: WorkerFactory = defaultFactory) {
-    this.worker = this.start();
+/**
+ * Fetches and compiles the core once. Streaming compilation needs the
+ * server to send `application/wasm`; a static host that does not gets the
+ * slower path instead of a failure.
+ */
+async function compileCore(url: string): Promise<WebAssembly.Module> {
+  const response = await fetch(url, { credentials: 'same-origin' });
+  if (!response.ok) throw new SubdivError('internal_error', `Cannot load the core (${url}): HTTP ${response.status}.`);
+  if (response.headers.get('content-type')?.startsWith('application/wasm')) {
+    return WebAssembly.compileStreaming(response);
+  }
+  return WebAssembly.compile(await response.arrayBuffer());
+}
+
+interface Queued {
+  id: number;
+  session: CoreSession;
+  kind: WorkerRequestKind;
+  args: unknown;
+  resolve: (value: unknown) => void;
+  reject: (error: Error) => void;
+}
+
+/** The page's core: one worker, shared by the sessions it hands out. */
+export class WorkerClient {
+  private worker: Worker | null = null;
+  private readonly queue: Queued[] = [];
+  private running: Queued | null = null;
+  private nextId = 1;
+  private readonly module: Promise<WebAssembly.Module | null>;
+  private schemes: Promise<string[]>;
+  private disposed = false;
+  /** Workers started so far (a cancel of a running request starts another). */
+  workersStarted = 0;
+
+  /**
+   * @param factory makes a worker (tests pass their own).
+   * @param wasmUrl where the `.wasm` is; null lets each worker fetch it itself.
+   */
+  constructor(
+    private readonly factory: WorkerFactory = defaultFactory,
+    wasmUrl: string | null = WASM_URL,
+  ) {
+    this.module = wasmUrl ? compileCore(wasmUrl) : Promise.resolve(null);
+    // A failed compile is reported by the first request (init), not as an unhandled rejection.
+    this.module.catch(() => undefined);
     this.schemes = this.startInit();
+  }
+
+  /** A new session: its own requests and its own cancel. */
+  session(): CoreSession {
+    return new CoreSession(this);
   }
 
   /** Resolves with the core's scheme names once the WASM module is loaded. */
@@ -52,95 +97,175 @@ export class WorkerClient {
     return this.schemes;
   }
 
-  /** Parses OFF/OBJ text; the result is level 0 with its facts and render buffers. */
-  parse(text: string, format: MeshFormat): Promise<LevelData> {
-    return this.request('parse', { text, format });
+  /** Requests running or queued, of all sessions. */
+  get pendingCount(): number {
+    return this.queue.length + (this.running ? 1 : 0);
   }
 
-  /** Facts and render buffers of a mesh built elsewhere. */
-  prepare(mesh: Mesh): Promise<LevelData> {
-    return this.request('prepare', { mesh });
-  }
-
-  /** Subdivides in the worker; `ms` of the result is the core's time for the step. */
-  subdivide(mesh: Mesh, options: SubdivideOptions): Promise<LevelData> {
-    return this.request('subdivide', { mesh, options });
-  }
-
-  /** Predicted counts and peak bytes of `subdivide(mesh, options)`. */
-  predictSize(mesh: Mesh, options: SubdivideOptions): Promise<SizePrediction> {
-    return this.request('predict', { mesh, options });
-  }
-
-  /** OFF or OBJ text of `mesh`. */
-  exportMesh(mesh: Mesh, format: MeshFormat): Promise<string> {
-    return this.request('export', { mesh, format });
-  }
-
-  /** Resolves when the core accepts `rules`; rejects with its SubdivError (invalid_argument) otherwise. */
-  checkRules(rules: RuleSet): Promise<null> {
-    return this.request('checkRules', { rules });
-  }
-
-  /** True while a request is running or queued. */
-  get busy(): boolean {
-    return this.pending.size > 0;
-  }
-
-  /** Stops whatever runs now: every pending request rejects with CancelledError; a fresh worker takes over. */
-  cancel(): void {
-    this.worker.terminate();
-    const pending = [...this.pending.values()];
-    this.pending.clear();
-    for (const p of pending) p.reject(new CancelledError());
-    this.worker = this.start();
-    this.schemes = this.startInit();
-  }
-
-  /** Terminates the worker; the client cannot be used afterwards. */
+  /** Terminates the worker; every pending request rejects with CancelledError. */
   dispose(): void {
-    this.worker.terminate();
-    for (const p of this.pending.values()) p.reject(new CancelledError());
-    this.pending.clear();
+    this.disposed = true;
+    this.worker?.terminate();
+    this.worker = null;
+    const all = [...(this.running ? [this.running] : []), ...this.queue.splice(0)];
+    this.running = null;
+    for (const r of all) r.reject(new CancelledError());
+  }
+
+  /** @internal Queues a request of `session`. */
+  request<K extends WorkerRequestKind>(
+    session: CoreSession,
+    kind: K,
+    args: WorkerRequests[K]['args'],
+  ): Promise<WorkerRequests[K]['result']> {
+    return new Promise((resolve, reject) => {
+      if (this.disposed) {
+        reject(new CancelledError());
+        return;
+      }
+      this.queue.push({ id: this.nextId++, session, kind, args, resolve: resolve as (v: unknown) => void, reject });
+      this.pump();
+    });
+  }
+
+  /** @internal Drops `session`'s requests; restarts the worker only if one of them is running. */
+  cancel(session: CoreSession): void {
+    const dropped = this.queue.filter((r) => r.session === session);
+    for (const r of dropped) this.queue.splice(this.queue.indexOf(r), 1);
+    const running = this.running;
+    if (running?.session === session) {
+      this.worker?.terminate();
+      this.worker = null;
+      this.running = null;
+      dropped.unshift(running);
+      // The new worker loads the core again before the next request.
+      this.schemes = this.startInit();
+    }
+    for (const r of dropped) r.reject(new CancelledError());
+    this.pump();
   }
 
   private startInit(): Promise<string[]> {
-    const schemes = this.request('init', {});
+    const schemes = this.request(this.internal, 'init', {});
     // Cancelling may reject it before anyone awaits it: that is not an error.
     schemes.catch(() => undefined);
     return schemes;
   }
 
-  private start(): Worker {
+  /** The client's own session, for init requests (never cancelled by a viewer). */
+  private readonly internal = new CoreSession(this);
+
+  private pump(): void {
+    if (this.running || this.disposed) return;
+    // An init request goes first: the next request needs the core.
+    const initAt = this.queue.findIndex((r) => r.kind === 'init');
+    const next = initAt >= 0 ? this.queue.splice(initAt, 1)[0] : this.queue.shift();
+    if (!next) return;
+    this.running = next;
+    void this.send(next);
+  }
+
+  private async send(request: Queued): Promise<void> {
+    let args = request.args;
+    if (request.kind === 'init') {
+      try {
+        args = { module: await this.module };
+      } catch (error) {
+        this.settle(request, { id: request.id, ok: false, error: errorData(error) });
+        return;
+      }
+      if (this.running !== request) return;
+    }
+    const message: WorkerRequestMessage = { id: request.id, kind: request.kind, args: args as never };
+    this.ensureWorker().postMessage(message);
+  }
+
+  private ensureWorker(): Worker {
+    if (this.worker) return this.worker;
     const worker = this.factory();
-    worker.onmessage = (event: MessageEvent<WorkerResponseMessage>) => this.settle(event.data);
+    this.workersStarted++;
+    worker.onmessage = (event: MessageEvent<WorkerResponseMessage>) => {
+      if (this.running && event.data.id === this.running.id) this.settle(this.running, event.data);
+    };
     worker.onerror = (event: ErrorEvent) => {
-      // A worker that fails to load or crashes answers nothing more: fail everything pending.
+      // A worker that fails to load or crashes answers nothing more: fail what runs, start afresh.
       event.preventDefault();
       const message = event.message || 'The SubdivLab core worker failed to start.';
-      for (const p of this.pending.values()) p.reject(new SubdivError('internal_error', message));
-      this.pending.clear();
+      worker.terminate();
+      if (this.worker === worker) this.worker = null;
+      const running = this.running;
+      if (running)
+        this.settle(running, { id: running.id, ok: false, error: { code: 'internal_error', message, line: 0 } });
     };
+    this.worker = worker;
     return worker;
   }
 
-  private settle(response: WorkerResponseMessage): void {
-    const pending = this.pending.get(response.id);
-    if (!pending) return;
-    this.pending.delete(response.id);
-    if (response.ok) pending.resolve(response.value);
-    else pending.reject(new SubdivError(response.error.code, response.error.message, response.error.line));
+  private settle(request: Queued, response: WorkerResponseMessage): void {
+    if (this.running !== request) return;
+    this.running = null;
+    if (response.ok) request.resolve(response.value);
+    else request.reject(new SubdivError(response.error.code, response.error.message, response.error.line));
+    this.pump();
+  }
+}
+
+function errorData(error: unknown): { code: 'internal_error'; message: string; line: number } {
+  return { code: 'internal_error', message: error instanceof Error ? error.message : String(error), line: 0 };
+}
+
+/**
+ * One viewer's access to the page's core. Requests run in order with the
+ * other sessions'; {@link cancel} stops only this session's.
+ */
+export class CoreSession {
+  constructor(readonly client: WorkerClient) {}
+
+  /** Resolves with the core's scheme names once the WASM module is loaded. */
+  ready(): Promise<string[]> {
+    return this.client.ready();
   }
 
-  private request<K extends WorkerRequestKind>(
-    kind: K,
-    args: WorkerRequests[K]['args'],
-  ): Promise<WorkerRequests[K]['result']> {
-    const id = this.nextId++;
-    const message: WorkerRequestMessage<K> = { id, kind, args };
-    return new Promise((resolve, reject) => {
-      this.pending.set(id, { resolve: resolve as (value: unknown) => void, reject });
-      this.worker.postMessage(message);
-    });
+  /** Parses OFF/OBJ text; the result is level 0 with its facts and render buffers. */
+  parse(text: string, format: MeshFormat): Promise<LevelData> {
+    return this.client.request(this, 'parse', { text, format });
   }
+
+  /** Facts and render buffers of a mesh built elsewhere. */
+  prepare(mesh: Mesh): Promise<LevelData> {
+    return this.client.request(this, 'prepare', { mesh });
+  }
+
+  /** Subdivides in the worker; `ms` of the result is the core's time for the step. */
+  subdivide(mesh: Mesh, options: SubdivideOptions): Promise<LevelData> {
+    return this.client.request(this, 'subdivide', { mesh, options });
+  }
+
+  /** Predicted counts and peak bytes of `subdivide(mesh, options)`. */
+  predictSize(mesh: Mesh, options: SubdivideOptions): Promise<SizePrediction> {
+    return this.client.request(this, 'predict', { mesh, options });
+  }
+
+  /** OFF or OBJ text of `mesh`. */
+  exportMesh(mesh: Mesh, format: MeshFormat): Promise<string> {
+    return this.client.request(this, 'export', { mesh, format });
+  }
+
+  /** Resolves when the core accepts `rules`; rejects with its SubdivError (invalid_argument) otherwise. */
+  checkRules(rules: RuleSet): Promise<null> {
+    return this.client.request(this, 'checkRules', { rules });
+  }
+
+  /** Stops this session's running or queued requests (they reject with CancelledError); others go on. */
+  cancel(): void {
+    this.client.cancel(this);
+  }
+}
+
+let page: WorkerClient | null = null;
+
+/** The page's one core (made on first use): every viewer on a page shares it. */
+export function pageCore(): WorkerClient {
+  page ??= new WorkerClient();
+  return page;
 }

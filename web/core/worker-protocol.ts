@@ -18,8 +18,8 @@ export interface LevelData {
 
 /** Requests the worker understands, by kind. */
 export interface WorkerRequests {
-  /** Loads the WASM core; answers the scheme names. */
-  init: { args: Record<string, never>; result: string[] };
+  /** Loads the WASM core (from the page's compiled module when given); answers the scheme names. */
+  init: { args: { module?: WebAssembly.Module | null }; result: string[] };
   /** Parses OFF/OBJ text into a level-0 LevelData. */
   parse: { args: { text: string; format: MeshFormat }; result: LevelData };
   /** Facts and render buffers of a mesh the page already has. */

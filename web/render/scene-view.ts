@@ -1,9 +1,10 @@
 /**
- * The three.js side of one viewer: renderer, scene, camera, trackball
+ * The three.js side of one viewer: its canvas, scene, camera, trackball
  * controls, the surface of the shown level, its polygon edges and the
- * overlays. It draws on demand (when the camera or content changes), so
- * several views can share a page. Geometry comes in as LevelGraphics, owned
- * by the caller; this class owns only its materials and helper objects.
+ * overlays. It draws on demand (when the camera or content changes) through
+ * the page's one shared renderer, so many views can share a page.
+ * Geometry comes in as LevelGraphics, owned by the caller; this class owns
+ * only its materials and helper objects.
  */
 import {
   AmbientLight,
@@ -21,11 +22,11 @@ import {
   Scene,
   Sphere,
   Vector3,
-  WebGLRenderer,
 } from 'three';
 import { TrackballControls } from 'three/addons/controls/TrackballControls.js';
 import type { LevelGraphics } from './level-graphics';
 import type { OverlayName, RenderMode } from './render-mode';
+import { type SharedRenderer, sharedRenderer } from './shared-renderer';
 import type { ViewState } from './view-state';
 
 /** Colours shared by the WebGL view and the SVG export. */
@@ -48,7 +49,10 @@ export const LIGHT_SHARES = { ambient: 0.32, directional: 0.8 } as const;
 export class SceneView {
   readonly canvas: HTMLCanvasElement;
   readonly camera: PerspectiveCamera;
-  private readonly renderer: WebGLRenderer;
+  private readonly renderer: SharedRenderer;
+  private readonly context: CanvasRenderingContext2D;
+  /** Clear colour of the view (null: transparent). */
+  private background: string | null = VIEW_COLORS.background;
   private readonly scene = new Scene();
   private readonly controls: TrackballControls;
   private readonly surface: Mesh;
@@ -75,11 +79,14 @@ export class SceneView {
   onViewChange: (() => void) | null = null;
 
   constructor(private readonly container: HTMLElement) {
-    this.renderer = new WebGLRenderer({ antialias: true, alpha: true });
-    this.renderer.setPixelRatio(window.devicePixelRatio);
-    this.renderer.setClearColor(new Color(VIEW_COLORS.background), 1);
-    this.canvas = this.renderer.domElement;
+    this.renderer = sharedRenderer();
+    this.canvas = document.createElement('canvas');
     this.canvas.classList.add('subdiv-canvas');
+    // Inline, so the view fills its container inside any page or shadow root.
+    this.canvas.style.cssText = 'display:block;width:100%;height:100%;touch-action:none';
+    const context = this.canvas.getContext('2d');
+    if (!context) throw new Error('This browser cannot draw on a canvas.');
+    this.context = context;
     container.append(this.canvas);
 
     this.camera = new PerspectiveCamera(35, 1, 0.01, 100);
@@ -281,10 +288,15 @@ export class SceneView {
     return (this.edgeLines.geometry.index?.count ?? 0) / 2;
   }
 
-  /** Geometries and textures alive on the GPU (three's renderer.info), for leak checks. */
+  /** Geometries and textures alive on the GPU for the whole page (three's renderer.info), for leak checks. */
   gpuMemory(): { geometries: number; textures: number } {
-    const { geometries, textures } = this.renderer.info.memory;
-    return { geometries, textures };
+    return this.renderer.memory();
+  }
+
+  /** The colour behind the model (a CSS colour; null: transparent). */
+  setBackground(color: string | null): void {
+    this.background = color;
+    this.dirty = true;
   }
 
   /** Marks the picture out of date; it is redrawn on the next animation frame. */
@@ -295,7 +307,7 @@ export class SceneView {
   /** Draws now. */
   render(): void {
     this.dirty = false;
-    this.renderer.render(this.scene, this.camera);
+    this.renderer.draw(this.scene, this.camera, this.context, this.canvas.width, this.canvas.height, this.background);
   }
 
   /** Size of the view in CSS pixels. */
@@ -305,36 +317,28 @@ export class SceneView {
 
   /**
    * PNG of the view at `scale` × its CSS size, optionally with a transparent
-   * background. Draws once into a resized drawing buffer and snapshots it in
-   * the same task (toBlob copies the bitmap synchronously).
+   * background: drawn once into a canvas of that size.
    */
   exportPng(scale: number, transparent: boolean): Promise<Blob> {
     const { width, height } = this.size;
-    const gl = this.renderer.getContext();
-    const maxSize = Math.min(this.renderer.capabilities.maxTextureSize, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE));
-    if (width * scale > maxSize || height * scale > maxSize) {
+    const w = Math.round(width * scale);
+    const h = Math.round(height * scale);
+    const maxSize = this.renderer.maxSize;
+    if (w > maxSize || h > maxSize) {
       return Promise.reject(
-        new Error(
-          `A ×${scale} image would be ${width * scale}×${height * scale} pixels; this GPU draws at most ${maxSize}×${maxSize}.`,
-        ),
+        new Error(`A ×${scale} image would be ${w}×${h} pixels; this GPU draws at most ${maxSize}×${maxSize}.`),
       );
     }
-    const pixelRatio = this.renderer.getPixelRatio();
-    const blob = new Promise<Blob>((resolve, reject) => {
-      this.renderer.setPixelRatio(scale);
-      this.renderer.setSize(width, height, false);
-      if (transparent) this.renderer.setClearAlpha(0);
-      this.renderer.render(this.scene, this.camera);
-      this.canvas.toBlob(
-        (b) => (b ? resolve(b) : reject(new Error('The browser could not encode the PNG.'))),
-        'image/png',
-      );
-      this.renderer.setClearAlpha(1);
-      this.renderer.setPixelRatio(pixelRatio);
-      this.renderer.setSize(width, height, false);
-      this.render();
-    });
-    return blob;
+    const canvas = document.createElement('canvas');
+    canvas.width = w;
+    canvas.height = h;
+    const context = canvas.getContext('2d');
+    if (!context) return Promise.reject(new Error('This browser cannot draw on a canvas.'));
+    this.renderer.draw(this.scene, this.camera, context, w, h, transparent ? null : this.background);
+    if (w > this.canvas.width || h > this.canvas.height) this.renderer.shrink();
+    return new Promise<Blob>((resolve, reject) =>
+      canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('The browser could not encode the PNG.'))), 'image/png'),
+    );
   }
 
   /** Stops drawing and frees the renderer, materials and helpers (not the caller's LevelGraphics). */
@@ -349,7 +353,6 @@ export class SceneView {
     (this.edgeLines.material as LineBasicMaterial).dispose();
     (this.controlLines.material as LineBasicMaterial).dispose();
     (this.curveLines.material as LineBasicMaterial).dispose();
-    this.renderer.dispose();
     this.canvas.remove();
   }
 
@@ -365,7 +368,9 @@ export class SceneView {
 
   private resize(): void {
     const { width, height } = this.size;
-    this.renderer.setSize(width, height, false);
+    const ratio = window.devicePixelRatio || 1;
+    this.canvas.width = Math.round(width * ratio);
+    this.canvas.height = Math.round(height * ratio);
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
     this.controls.handleResize();

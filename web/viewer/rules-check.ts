@@ -5,15 +5,15 @@
  * in the UI.
  */
 import type { RuleSet } from '../core/rule-set';
-import { CancelledError, type WorkerClient } from '../core/worker-client';
+import { CancelledError, type CoreSession } from '../core/worker-client';
 
 /** Resolves when the core accepts `rules`; rejects with its SubdivError (code invalid_argument) otherwise. */
-export async function checkRulesInCore(client: WorkerClient, rules: RuleSet): Promise<void> {
+export async function checkRulesInCore(core: CoreSession, rules: RuleSet): Promise<void> {
   try {
-    await client.checkRules(rules);
+    await core.checkRules(rules);
   } catch (error) {
-    // A cancelled step restarts the worker and takes queued requests with it: ask again.
+    // Cancelling a step takes this session's queued requests with it: ask again.
     if (!(error instanceof CancelledError)) throw error;
-    await client.checkRules(rules);
+    await core.checkRules(rules);
   }
 }

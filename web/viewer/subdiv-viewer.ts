@@ -1,13 +1,14 @@
 /**
  * SubdivViewer: a self-contained, embeddable viewer. It owns one SceneView
- * (renderer, camera, controls) inside a container element and the history
+ * (camera, controls, its picture) inside a container element and the history
  * of levels 0..N of one model under one scheme. The core runs in a Web
- * Worker (a WorkerClient, which several viewers may share). Methods reject
+ * Worker shared by every viewer of the page (a WorkerClient; each viewer has
+ * its own CoreSession, so cancelling one viewer stops only its requests). Methods reject
  * with SubdivError / CancelledError / Error; the viewer never touches the
  * DOM outside its container, so an app shell or an embed adds the panels.
  */
 import type { Mesh, MeshFacts, MeshFormat, SchemeName, SizePrediction, SubdivideOptions } from '../core/mesh';
-import { type LevelData, WorkerClient } from '../core/worker-client';
+import { type CoreSession, type LevelData, pageCore, type WorkerClient } from '../core/worker-client';
 import { LevelGraphics } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
@@ -30,11 +31,7 @@ export interface LargeStepInfo {
 }
 
 export interface SubdivViewerOptions {
-  /**
-   * The core. Default: a worker of its own, disposed with the viewer. Viewers
-   * may share one, but cancelling restarts it for all of them (their running
-   * requests then reject with CancelledError).
-   */
+  /** The core. Default: the page's one worker ({@link pageCore}), shared with every other viewer. */
   client?: WorkerClient;
   scheme?: SchemeName;
   renderMode?: RenderMode;
@@ -75,8 +72,8 @@ interface Level {
 
 export class SubdivViewer {
   readonly view: SceneView;
-  readonly client: WorkerClient;
-  private readonly ownsClient: boolean;
+  /** This viewer's requests to the page's core. */
+  readonly core: CoreSession;
   private levels: Level[] = [];
   private current = 0;
   private name: string | null = null;
@@ -94,8 +91,7 @@ export class SubdivViewer {
   private stepping = false;
 
   constructor(container: HTMLElement, options: SubdivViewerOptions = {}) {
-    this.ownsClient = !options.client;
-    this.client = options.client ?? new WorkerClient();
+    this.core = (options.client ?? pageCore()).session();
     this.scheme = options.scheme ?? 'catmull-clark';
     this.memoryBudget = options.memoryBudgetBytes ?? defaultMemoryBudget();
     this.confirmLargeStep = options.confirmLargeStep ?? (async () => false);
@@ -110,7 +106,7 @@ export class SubdivViewer {
 
   /** Scheme names the core offers (resolves once the WASM core is loaded). */
   schemes(): Promise<string[]> {
-    return this.client.ready();
+    return this.core.ready();
   }
 
   get state(): ViewerState {
@@ -151,12 +147,12 @@ export class SubdivViewer {
 
   /** Shows `mesh` as level 0 of model `name`; earlier levels are dropped only once it succeeded. */
   async load(mesh: Mesh, name: string): Promise<void> {
-    await this.replaceWith(name, () => this.client.prepare(mesh));
+    await this.replaceWith(name, () => this.core.prepare(mesh));
   }
 
   /** Parses OFF/OBJ text in the worker and shows it. On failure the previous model stays. */
   async loadText(text: string, format: MeshFormat, name: string): Promise<void> {
-    await this.replaceWith(name, () => this.client.parse(text, format));
+    await this.replaceWith(name, () => this.core.parse(text, format));
   }
 
   /**
@@ -179,7 +175,7 @@ export class SubdivViewer {
     const source = this.levels[from].data.mesh;
     this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
     try {
-      const prediction = await this.client.predictSize(source, options);
+      const prediction = await this.core.predictSize(source, options);
       const estimatedBytes = stepBytes(prediction);
       if (estimatedBytes > this.memoryBudget) {
         this.setBusy(null);
@@ -188,7 +184,7 @@ export class SubdivViewer {
         if (generation !== this.generation) return false;
         this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
       }
-      const data = await this.client.subdivide(source, options);
+      const data = await this.core.subdivide(source, options);
       if (generation !== this.generation) return false;
       this.levels.push({ data, graphics: null });
       this.current = this.levels.length - 1;
@@ -255,7 +251,7 @@ export class SubdivViewer {
   cancel(): void {
     if (!this.busyState) return;
     this.generation++;
-    this.client.cancel();
+    this.core.cancel();
     this.setBusy(null);
   }
 
@@ -302,7 +298,7 @@ export class SubdivViewer {
 
   /** OFF or OBJ text of the shown level. */
   exportMesh(format: MeshFormat): Promise<string> {
-    return this.client.exportMesh(this.requireLevel().data.mesh, format);
+    return this.core.exportMesh(this.requireLevel().data.mesh, format);
   }
 
   /** The mesh of the shown level (null before a load). */
@@ -315,18 +311,26 @@ export class SubdivViewer {
     return this.levels[0]?.data.mesh ?? null;
   }
 
+  /**
+   * Frees the GPU copies of every level's geometry (a viewer far out of
+   * view); the levels stay, and what is drawn next is uploaded again.
+   */
+  releaseGpu(): void {
+    for (const level of this.levels) level.graphics?.dispose();
+  }
+
   /** Budget over which a step asks first (tests lower it to see the question). */
   setMemoryBudget(bytes: number): void {
     this.memoryBudget = bytes;
   }
 
-  /** Frees the GPU objects, the renderer and (if it made it) the worker. */
+  /** Frees the GPU objects and the view, and cancels this viewer's requests (the page's worker stays). */
   dispose(): void {
     this.generation++;
     for (const level of this.levels) level.graphics?.dispose();
     this.levels = [];
     this.view.dispose();
-    if (this.ownsClient) this.client.dispose();
+    this.core.cancel();
     this.listeners.clear();
     this.viewListeners.clear();
   }
