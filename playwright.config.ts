@@ -40,7 +40,7 @@ export default defineConfig({
   webServer: externalUrl
     ? undefined
     : {
-        command: `npx vite build --logLevel warn && npx vite preview --port ${port} --strictPort`,
+        command: `npx vite build --logLevel warn && npx vite build -c vite.embed.config.ts --logLevel warn && npx vite preview --port ${port} --strictPort`,
         url: baseURL,
         reuseExistingServer: false,
         timeout: 180_000,

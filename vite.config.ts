@@ -1,17 +1,44 @@
-import { defineConfig } from 'vite';
+import { fileURLToPath } from 'node:url';
+import { defineConfig, type Plugin } from 'vite';
+
+const page = (path: string) => fileURLToPath(new URL(path, import.meta.url));
+
+/**
+ * In the dev server, embed/subdiv-viewer.js (the built element's name, as
+ * public/examples/ and the Embed dialog's snippets write it) is the module's
+ * source; `vite build -c vite.embed.config.ts` makes the real file.
+ */
+function embedModuleInDev(): Plugin {
+  return {
+    name: 'subdivlab-embed-module-in-dev',
+    configureServer(server) {
+      server.middlewares.use((request, _response, next) => {
+        if (request.url?.startsWith('/embed/subdiv-viewer.js')) {
+          request.url = request.url.replace('/embed/subdiv-viewer.js', '/embed/subdiv-viewer.ts');
+        }
+        next();
+      });
+    },
+  };
+}
 
 // The app lives in web/; sample meshes in public/ are served as-is. A relative
 // base makes the built site work from any sub-path of any static host.
+// Two pages: the app (index.html) and the iframe route (embed.html).
 export default defineConfig({
   root: 'web',
   publicDir: '../public',
   base: './',
+  plugins: [embedModuleInDev()],
   build: {
     outDir: '../dist',
     emptyOutDir: true,
     target: 'es2022',
     // three.js alone is about 550 kB minified (150 kB gzip); it is one chunk on purpose.
     chunkSizeWarningLimit: 700,
+    rollupOptions: {
+      input: { index: page('web/index.html'), embed: page('web/embed.html') },
+    },
   },
   worker: {
     format: 'es',

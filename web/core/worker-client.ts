@@ -11,6 +11,7 @@
 import type { Mesh, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import { SubdivError } from './subdiv-error';
+import workerUrl from './subdiv-worker.ts?worker&url';
 import type {
   LevelData,
   WorkerRequestKind,
@@ -32,8 +33,19 @@ export class CancelledError extends Error {
 /** Makes the worker; the default one is bundled by Vite from subdiv-worker.ts. */
 export type WorkerFactory = () => Worker;
 
-const defaultFactory: WorkerFactory = () =>
-  new Worker(new URL('./subdiv-worker.ts', import.meta.url), { type: 'module', name: 'subdivlab-core' });
+/**
+ * The bundled worker. Browsers start workers only from the page's own
+ * origin: when this module is loaded from another host (a course page
+ * pointing at wherever SubdivLab is hosted), a same-origin blob module
+ * imports the worker from there instead.
+ */
+const defaultFactory: WorkerFactory = () => {
+  const url = new URL(workerUrl, import.meta.url);
+  const options: WorkerOptions = { type: 'module', name: 'subdivlab-core' };
+  if (url.origin === self.location.origin) return new Worker(url, options);
+  const shim = new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' });
+  return new Worker(URL.createObjectURL(shim), options);
+};
 
 /** Where the page fetches the core's `.wasm` (Vite rewrites the URL to the emitted asset). */
 const WASM_URL = new URL('./generated/subdivlab.wasm', import.meta.url).href;

@@ -1,0 +1,99 @@
+/**
+ * The element's control bar: `minimal` has the level stepper and the scheme
+ * menu; `full` adds the render mode, the control-mesh and control-edge
+ * overlays, Fit and the counts. Every control is a native element with a
+ * `part` name, so a page styles it with `subdiv-viewer::part(level-up)`.
+ */
+import type { SchemeName } from '../core/mesh';
+import { RENDER_MODES, type RenderMode } from '../render/render-mode';
+import { el } from '../ui/dom';
+import { faceTypes } from '../ui/facts-panel';
+import { SCHEME_NAMES, schemeInfo } from '../viewer/scheme-info';
+import type { ViewerState } from '../viewer/subdiv-viewer';
+import type { ControlsMode } from '../viewer/viewer-params';
+
+export interface EmbedControlHandlers {
+  stepLevel: (delta: number) => void;
+  scheme: (scheme: SchemeName) => void;
+  renderMode: (mode: RenderMode) => void;
+  overlay: (name: 'control' | 'curves', on: boolean) => void;
+  fit: () => void;
+}
+
+function withPart<T extends HTMLElement>(element: T, part: string, label?: string): T {
+  element.setAttribute('part', part);
+  if (label) element.setAttribute('aria-label', label);
+  return element;
+}
+
+export class EmbedControls {
+  readonly element: HTMLElement;
+  private readonly down: HTMLButtonElement;
+  private readonly up: HTMLButtonElement;
+  private readonly level: HTMLOutputElement;
+  private readonly scheme: HTMLSelectElement;
+  private readonly mode: HTMLSelectElement;
+  private readonly control: HTMLInputElement;
+  private readonly curves: HTMLInputElement;
+  private readonly facts: HTMLElement;
+  private readonly fullOnly: HTMLElement[];
+
+  constructor(handlers: EmbedControlHandlers) {
+    this.down = withPart(el('button', { text: '−', attrs: { type: 'button' } }), 'level-down', 'Previous level');
+    this.up = withPart(el('button', { text: '+', attrs: { type: 'button' } }), 'level-up', 'Next level (subdivide)');
+    this.down.addEventListener('click', () => handlers.stepLevel(-1));
+    this.up.addEventListener('click', () => handlers.stepLevel(1));
+    this.level = withPart(el('output', { className: 'level', text: '–' }), 'level');
+    this.scheme = withPart(el('select'), 'scheme', 'Subdivision scheme');
+    for (const name of SCHEME_NAMES) {
+      if (name !== 'custom') this.scheme.append(el('option', { text: schemeInfo(name).label, attrs: { value: name } }));
+    }
+    this.scheme.addEventListener('change', () => handlers.scheme(this.scheme.value as SchemeName));
+    this.mode = withPart(el('select'), 'render-mode', 'Render mode');
+    for (const { mode, label } of RENDER_MODES) this.mode.append(el('option', { text: label, attrs: { value: mode } }));
+    this.mode.addEventListener('change', () => handlers.renderMode(this.mode.value as RenderMode));
+    this.control = el('input', { attrs: { type: 'checkbox' } });
+    this.control.addEventListener('change', () => handlers.overlay('control', this.control.checked));
+    this.curves = el('input', { attrs: { type: 'checkbox' } });
+    this.curves.addEventListener('change', () => handlers.overlay('curves', this.curves.checked));
+    const fit = withPart(el('button', { text: 'Fit', attrs: { type: 'button' } }), 'fit', 'Fit the view');
+    fit.addEventListener('click', handlers.fit);
+    this.facts = withPart(el('span', { className: 'facts' }), 'facts');
+    this.fullOnly = [
+      this.mode,
+      withPart(el('label', {}, this.control, 'Control mesh'), 'control-mesh'),
+      withPart(el('label', {}, this.curves, 'Control edges'), 'control-edges'),
+      fit,
+      this.facts,
+    ];
+    this.element = withPart(
+      el('div', { className: 'bar', attrs: { role: 'toolbar', 'aria-label': 'Viewer controls' } }),
+      'controls',
+    );
+    this.element.append(this.down, this.level, this.up, this.scheme, ...this.fullOnly);
+  }
+
+  setMode(mode: ControlsMode): void {
+    this.element.hidden = mode === 'none';
+    for (const e of this.fullOnly) e.hidden = mode !== 'full';
+  }
+
+  update(state: ViewerState): void {
+    const loaded = state.levelCount > 0;
+    const busy = state.busy !== null;
+    this.down.disabled = !loaded || state.level === 0;
+    this.up.disabled = !loaded || busy;
+    this.level.textContent = loaded ? `Level ${state.level}` : '–';
+    if (this.scheme.value !== state.scheme) {
+      if (![...this.scheme.options].some((o) => o.value === state.scheme)) {
+        this.scheme.append(el('option', { text: schemeInfo(state.scheme).label, attrs: { value: state.scheme } }));
+      }
+      this.scheme.value = state.scheme;
+    }
+    this.mode.value = state.renderMode;
+    this.control.checked = state.overlays.control;
+    this.curves.checked = state.overlays.curves;
+    const f = state.facts;
+    this.facts.textContent = f ? `${f.vertices} V · ${f.edges} E · ${f.faces} F (${faceTypes(f)})` : '';
+  }
+}

@@ -1,0 +1,80 @@
+/**
+ * The iframe route's postMessage API, both ways. Commands from the parent
+ * page are plain objects `{ subdivlab: NAME, ...fields }`, checked field by
+ * field here and never evaluated; anything else is refused with a reason.
+ * Events to the parent carry what the element's events carry.
+ *
+ * Commands: `load` ({ src } or { text, name }), `set-scheme` ({ scheme }),
+ * `subdivide`, `set-level` ({ level }), `set-view` ({ view }: the nine-number
+ * string or { position, target, up }).
+ * Events: `ready`, `load`, `level-change`, `error`, `progress`.
+ */
+import type { SchemeName } from '../core/mesh';
+import { parseViewState, parseViewString, type ViewState } from '../render/view-state';
+import { isSchemeName } from '../viewer/scheme-info';
+import { MAX_PARAM_LEVELS } from '../viewer/viewer-params';
+
+export type EmbedCommand =
+  | { subdivlab: 'load'; src: string }
+  | { subdivlab: 'load'; text: string; name: string }
+  | { subdivlab: 'set-scheme'; scheme: SchemeName }
+  | { subdivlab: 'subdivide' }
+  | { subdivlab: 'set-level'; level: number }
+  | { subdivlab: 'set-view'; view: ViewState };
+
+export type EmbedEventName = 'ready' | 'load' | 'level-change' | 'error' | 'progress';
+
+/** An event as posted to the parent: the element's event detail plus its name. */
+export type EmbedEventMessage = { subdivlab: EmbedEventName } & Record<string, unknown>;
+
+/** Largest mesh text a `load` command may carry (as for `?src=` downloads). */
+export const MAX_MESSAGE_TEXT = 64 * 1024 * 1024;
+
+export type Checked = { ok: true; command: EmbedCommand } | { ok: false; reason: string };
+
+function isRecord(value: unknown): value is Record<string, unknown> {
+  return typeof value === 'object' && value !== null && !Array.isArray(value);
+}
+
+/** Checks a message from the parent page; says why it is refused when it is. */
+export function checkCommand(data: unknown): Checked {
+  if (!isRecord(data)) return { ok: false, reason: 'a command is an object { subdivlab: NAME, ... }' };
+  const name = data.subdivlab;
+  switch (name) {
+    case 'load': {
+      if (typeof data.src === 'string' && data.src.length > 0 && data.src.length <= 4096) {
+        return { ok: true, command: { subdivlab: 'load', src: data.src } };
+      }
+      if (typeof data.text === 'string' && typeof data.name === 'string') {
+        if (data.text.length > MAX_MESSAGE_TEXT) return { ok: false, reason: 'load: text is larger than 64 MB' };
+        return { ok: true, command: { subdivlab: 'load', text: data.text, name: data.name.slice(0, 256) } };
+      }
+      return { ok: false, reason: 'load needs src (a URL) or text and name (the mesh file)' };
+    }
+    case 'set-scheme':
+      if (typeof data.scheme === 'string' && isSchemeName(data.scheme)) {
+        return { ok: true, command: { subdivlab: 'set-scheme', scheme: data.scheme } };
+      }
+      return { ok: false, reason: `set-scheme: unknown scheme ${JSON.stringify(data.scheme)}` };
+    case 'subdivide':
+      return { ok: true, command: { subdivlab: 'subdivide' } };
+    case 'set-level':
+      if (typeof data.level === 'number' && Number.isInteger(data.level) && data.level >= 0) {
+        if (data.level > MAX_PARAM_LEVELS) return { ok: false, reason: `set-level: at most ${MAX_PARAM_LEVELS}` };
+        return { ok: true, command: { subdivlab: 'set-level', level: data.level } };
+      }
+      return { ok: false, reason: 'set-level needs level, a whole number ≥ 0' };
+    case 'set-view': {
+      const view =
+        typeof data.view === 'string'
+          ? parseViewString(data.view)
+          : isRecord(data.view)
+            ? parseViewState(JSON.stringify(data.view))
+            : null;
+      if (view) return { ok: true, command: { subdivlab: 'set-view', view } };
+      return { ok: false, reason: 'set-view needs view: nine numbers, or { position, target, up }' };
+    }
+    default:
+      return { ok: false, reason: `unknown command ${JSON.stringify(name)}` };
+  }
+}

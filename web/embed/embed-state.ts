@@ -1,0 +1,96 @@
+/**
+ * What a `<subdiv-viewer>`'s attributes ask for, read with the same rules as
+ * a share link (viewer-params.ts): a bad value falls back to the default and
+ * is named in `problems`.
+ */
+import type { SchemeName } from '../core/mesh';
+import { RENDER_MODES, type RenderMode } from '../render/render-mode';
+import { parseViewString, type ViewState } from '../render/view-state';
+import { isSchemeName } from '../viewer/scheme-info';
+import { CONTROLS_MODES, type ControlsMode, MAX_PARAM_LEVELS, parseFlag, parseLevels } from '../viewer/viewer-params';
+
+export interface EmbedState {
+  src: string;
+  scheme: SchemeName;
+  levels: number;
+  renderMode: RenderMode;
+  overlays: { control: boolean; curves: boolean; bbox: boolean };
+  triangulate: boolean;
+  rules: string;
+  view: ViewState | null;
+  controls: ControlsMode;
+  alt: string;
+  /** A CSS colour, `transparent`, or null for the default (light or dark). */
+  background: string | null;
+  problems: { attribute: string; message: string }[];
+}
+
+export const DEFAULT_CONTROLS: ControlsMode = 'minimal';
+
+/** Reads the state from `attr(name)` (an element's getAttribute). */
+export function readEmbedState(attr: (name: string) => string | null): EmbedState {
+  const problems: EmbedState['problems'] = [];
+  const flag = (name: string): boolean => {
+    const value = attr(name);
+    if (value === null) return false;
+    const on = parseFlag(value);
+    if (on === null)
+      problems.push({ attribute: name, message: `${name} must be present (on) or absent, or 1/0; not "${value}".` });
+    return on ?? false;
+  };
+  const schemeText = attr('scheme');
+  let scheme: SchemeName = 'catmull-clark';
+  if (schemeText) {
+    if (isSchemeName(schemeText)) scheme = schemeText;
+    else problems.push({ attribute: 'scheme', message: `Unknown scheme "${schemeText}".` });
+  }
+  const levelsText = attr('levels');
+  let levels = 0;
+  if (levelsText !== null) {
+    const n = parseLevels(levelsText);
+    if (n === null) {
+      problems.push({
+        attribute: 'levels',
+        message: `levels must be a whole number from 0 to ${MAX_PARAM_LEVELS}, not "${levelsText}".`,
+      });
+    } else {
+      levels = n;
+    }
+  }
+  const modeText = attr('render-mode');
+  let renderMode: RenderMode = 'smooth';
+  if (modeText) {
+    const known = RENDER_MODES.find((m) => m.mode === modeText);
+    if (known) renderMode = known.mode;
+    else problems.push({ attribute: 'render-mode', message: `Unknown render mode "${modeText}".` });
+  }
+  const viewText = attr('view');
+  const view = parseViewString(viewText);
+  if (viewText && !view) {
+    problems.push({ attribute: 'view', message: 'view must be nine numbers: camera position, target and up.' });
+  }
+  const controlsText = attr('controls');
+  let controls = DEFAULT_CONTROLS;
+  if (controlsText) {
+    if ((CONTROLS_MODES as readonly string[]).includes(controlsText)) controls = controlsText as ControlsMode;
+    else
+      problems.push({
+        attribute: 'controls',
+        message: `controls must be none, minimal or full, not "${controlsText}".`,
+      });
+  }
+  return {
+    src: attr('src')?.trim() ?? '',
+    scheme,
+    levels,
+    renderMode,
+    overlays: { control: flag('control-mesh'), curves: flag('control-edges'), bbox: flag('bbox') },
+    triangulate: flag('triangulate'),
+    rules: attr('rules')?.trim() ?? '',
+    view,
+    controls,
+    alt: attr('alt') ?? '',
+    background: attr('background')?.trim() || null,
+    problems,
+  };
+}

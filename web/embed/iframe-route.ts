@@ -1,0 +1,73 @@
+/**
+ * embed.html: one `<subdiv-viewer>` filling the page, started from the
+ * query (`?src=…&scheme=…&levels=…&mode=…&view=…&controls=…`), for learning
+ * platforms that accept only iframes. It posts the element's events to the
+ * parent page and takes commands from it (embed-messages.ts).
+ */
+import { formatViewString } from '../render/view-state';
+import { OVERLAY_KEYS, parseViewerParams } from '../viewer/viewer-params';
+import { checkCommand, type EmbedEventMessage, type EmbedEventName } from './embed-messages';
+import { SubdivViewerElement } from './subdiv-viewer-element';
+
+if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', SubdivViewerElement);
+
+const query = new URLSearchParams(window.location.search);
+const { params, problems } = parseViewerParams(query);
+const viewer = document.createElement('subdiv-viewer');
+if (params.src) viewer.setAttribute('src', params.src);
+if (params.scheme) viewer.setAttribute('scheme', params.scheme);
+if (params.levels !== undefined) viewer.setAttribute('levels', String(params.levels));
+if (params.renderMode) viewer.setAttribute('render-mode', params.renderMode);
+for (const [name, on] of Object.entries(params.overlays ?? {})) {
+  if (on) viewer.setAttribute(OVERLAY_KEYS[name as keyof typeof OVERLAY_KEYS], '');
+}
+if (params.view) viewer.setAttribute('view', formatViewString(params.view));
+if (params.rules) viewer.setAttribute('rules', params.rules);
+viewer.setAttribute('controls', params.controls ?? 'minimal');
+for (const key of ['alt', 'background', 'triangulate']) {
+  const value = query.get(key);
+  if (value !== null) viewer.setAttribute(key, value);
+}
+viewer.style.cssText = 'position:fixed;inset:0;width:100%;height:100%;border-radius:0';
+document.body.append(viewer);
+
+function post(name: EmbedEventName, detail: object): void {
+  if (window.parent === window) return;
+  // The facts of a public mesh: nothing secret, and the parent's origin is not known in advance.
+  window.parent.postMessage({ subdivlab: name, ...detail } satisfies EmbedEventMessage, '*');
+}
+
+for (const name of ['load', 'level-change', 'error', 'progress'] as const) {
+  viewer.addEventListener(name, (event) => post(name, (event as CustomEvent).detail ?? {}));
+}
+for (const problem of problems) post('error', { code: 'invalid_argument', message: problem, line: 0, source: 'query' });
+
+window.addEventListener('message', (event: MessageEvent) => {
+  if (event.source !== window.parent || window.parent === window) return;
+  const checked = checkCommand(event.data);
+  if (!checked.ok) {
+    console.warn(`[subdivlab] ignored a message: ${checked.reason}`);
+    return;
+  }
+  const command = checked.command;
+  switch (command.subdivlab) {
+    case 'load':
+      if ('src' in command) viewer.src = command.src;
+      else void viewer.load(command.text, command.name).catch(() => undefined);
+      break;
+    case 'set-scheme':
+      viewer.scheme = command.scheme;
+      break;
+    case 'subdivide':
+      void viewer.subdivide();
+      break;
+    case 'set-level':
+      void viewer.setLevel(command.level);
+      break;
+    case 'set-view':
+      viewer.setView(command.view);
+      break;
+  }
+});
+
+post('ready', { version: 1 });
