@@ -44,3 +44,216 @@ test('the teaching example: four schemes on the octahedron, counts in the table 
   await embed.snapshot('embed-example-page');
   await embed.snapshot('embed-example-page-full', true);
 });
+
+const MESHES = {
+  cube: { vertices: 8, edges: 12, faces: 6 },
+  tetrahedron: { vertices: 4, edges: 6, faces: 4 },
+  octahedron: OCTAHEDRON,
+  icosahedron: { vertices: 12, edges: 30, faces: 20 },
+  torus: { vertices: 48, edges: 96, faces: 48 },
+} as const;
+
+/** The twelve viewers of the test page: mesh, scheme, levels (v10's src does not exist). */
+const TWELVE: { mesh: keyof typeof MESHES; scheme: string; levels: number }[] = [
+  { mesh: 'cube', scheme: 'catmull-clark', levels: 1 },
+  { mesh: 'tetrahedron', scheme: 'loop', levels: 2 },
+  { mesh: 'octahedron', scheme: 'sqrt3', levels: 1 },
+  { mesh: 'icosahedron', scheme: 'loop', levels: 1 },
+  { mesh: 'torus', scheme: 'catmull-clark', levels: 1 },
+  { mesh: 'cube', scheme: 'doo-sabin', levels: 2 },
+  { mesh: 'tetrahedron', scheme: 'sqrt3', levels: 2 },
+  { mesh: 'octahedron', scheme: 'catmull-clark', levels: 2 },
+  { mesh: 'icosahedron', scheme: 'doo-sabin', levels: 1 },
+  { mesh: 'torus', scheme: 'doo-sabin', levels: 1 },
+  { mesh: 'cube', scheme: 'catmull-clark', levels: 1 },
+  { mesh: 'octahedron', scheme: 'loop', levels: 3 },
+];
+const BAD = 10;
+
+function twelveViewerPage(): string {
+  const viewers = TWELVE.map(({ mesh, scheme, levels }, i) => {
+    const src = i === BAD ? '../meshes/missing.off' : `../meshes/${mesh}.off`;
+    return `<subdiv-viewer id="v${i}" src="${src}" scheme="${scheme}" levels="${levels}" controls="full"></subdiv-viewer>`;
+  });
+  return `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Twelve viewers</title>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+<style>body{margin:0 20px} subdiv-viewer{width:600px;height:300px;margin:0 0 60px}</style></head>
+<body><label>Notes <input id="field"></label>
+${viewers.join('\n')}
+<iframe id="frame" title="Loop on a tetrahedron" style="width:500px;height:300px;border:0"
+  src="../embed.html?src=meshes/tetrahedron.off&amp;scheme=loop&amp;levels=1&amp;controls=none"></iframe>
+</body></html>`;
+}
+
+test.describe('a page with twelve viewers and an iframe', () => {
+  test.use({ allowedConsoleErrors: [/404/] });
+
+  test('one core, lazy start, exact counts by events, GPU released and restored, live attributes, one bad src', async ({
+    embed,
+    page,
+  }) => {
+    const wasmRequests: string[] = [];
+    page.on('request', (request) => {
+      if (request.url().endsWith('.wasm') && request.frame() === page.mainFrame()) wasmRequests.push(request.url());
+    });
+    const warnings: string[] = [];
+    page.on('console', (message) => {
+      if (message.type() === 'warning') warnings.push(message.text());
+    });
+    await embed.serve('e2e/twelve.html', twelveViewerPage());
+    // A static host's 404 (vite preview would answer with the app's index.html).
+    await page.route('**/missing.off', (route) => route.fulfill({ status: 404, body: 'Not found' }));
+    await page.goto('./e2e/twelve.html');
+
+    await test.step('the viewers near the viewport start; the far ones wait', async () => {
+      await embed.waitForLevel('v0', 1);
+      await embed.waitForLevel('v1', 2);
+      expect((await embed.reading('v9')).started).toBe(false);
+      expect(await embed.events('load', 'v9')).toEqual([]);
+    });
+
+    for (const [i, { mesh, scheme, levels }] of TWELVE.entries()) {
+      await test.step(`v${i}: ${scheme} on the ${mesh}, level ${levels}`, async () => {
+        await page.locator(`#v${i}`).scrollIntoViewIfNeeded();
+        if (i === BAD) {
+          await expect.poll(async () => (await embed.events('error', `v${i}`)).length).toBe(1);
+          const [error] = await embed.events('error', `v${i}`);
+          expect(error.detail).toMatchObject({ code: 'load_error', line: 0 });
+          expect(String(error.detail.message)).toContain('404');
+          expect(String(error.detail.source)).toContain('missing.off');
+          await expect(page.locator(`#v${i}`).locator('.message')).toContainText('404');
+          expect((await embed.reading(`v${i}`)).level).toBe(-1);
+          return;
+        }
+        const reading = await embed.waitForLevel(`v${i}`, levels);
+        const want = expectedClosedCounts(scheme, MESHES[mesh], levels);
+        expect(reading.facts).toMatchObject({ ...want });
+        expect((await embed.lastLevelChange(`v${i}`))?.detail).toMatchObject({ level: levels, scheme, facts: want });
+        expect(await embed.events('load', `v${i}`)).toHaveLength(1);
+      });
+    }
+
+    await test.step('far above, the first viewers give back their GPU memory; back in view they draw the same level', async () => {
+      await page.locator('#frame').scrollIntoViewIfNeeded();
+      await expect.poll(async () => (await embed.reading('v0')).gpuReleased).toBe(true);
+      expect((await embed.reading('v11')).gpuReleased).toBe(false);
+      await page.evaluate(() => window.scrollTo(0, 0));
+      await expect.poll(async () => (await embed.reading('v0')).gpuReleased).toBe(false);
+      const v0 = await embed.reading('v0');
+      expect(v0.level).toBe(1);
+      expect(v0.facts).toMatchObject({ ...expectedClosedCounts('catmull-clark', MESHES.cube, 1) });
+      const pixels = await page.locator('#v0').screenshot();
+      await page.locator('#v0').evaluate((e) => e.setAttribute('render-mode', 'wireframe'));
+      await expect.poll(async () => (await page.locator('#v0').screenshot()).equals(pixels)).toBe(false);
+    });
+
+    await test.step('levels="3" recomputes to level 3', async () => {
+      await page.locator('#v0').evaluate((e) => e.setAttribute('levels', '3'));
+      const reading = await embed.waitForLevel('v0', 3);
+      expect(reading.facts).toMatchObject({ ...expectedClosedCounts('catmull-clark', MESHES.cube, 3) });
+      expect((await embed.lastLevelChange('v0'))?.detail).toMatchObject({ level: 3 });
+    });
+
+    await test.step("keys typed in the page's text field never reach a viewer; on a focused viewer they act on it alone", async () => {
+      await page.locator('#field').click();
+      await page.keyboard.type('s[]r');
+      await expect(page.locator('#field')).toHaveValue('s[]r');
+      expect((await embed.reading('v0')).level).toBe(3);
+      expect((await embed.reading('v1')).level).toBe(2);
+      await page.locator('#v1').focus();
+      await page.keyboard.press('s');
+      expect((await embed.waitForLevel('v1', 3)).facts).toMatchObject({
+        ...expectedClosedCounts('loop', MESHES.tetrahedron, 3),
+      });
+      await page.keyboard.press('[');
+      await embed.waitForLevel('v1', 2);
+      expect((await embed.reading('v0')).level).toBe(3);
+      await expect(page.locator('#field')).toHaveValue('s[]r');
+    });
+
+    await test.step('the whole page fetched the .wasm once, and no WebGL context was lost', async () => {
+      expect(wasmRequests).toHaveLength(1);
+      expect(warnings.filter((w) => /WebGL/i.test(w))).toEqual([]);
+    });
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await embed.snapshot('embed-twelve-viewers');
+  });
+
+  test('the iframe route: ready and level-change reach the parent; set-level by postMessage; malformed messages ignored', async ({
+    embed,
+    page,
+  }) => {
+    await embed.serve('e2e/twelve.html', twelveViewerPage());
+    await page.goto('./e2e/twelve.html');
+    await page.locator('#frame').scrollIntoViewIfNeeded();
+    await expect.poll(async () => (await embed.events('message:ready')).length).toBe(1);
+    const loop1 = expectedClosedCounts('loop', MESHES.tetrahedron, 1);
+    await expect
+      .poll(async () => (await embed.events('message:level-change')).at(-1)?.detail)
+      .toMatchObject({ level: 1, scheme: 'loop', facts: loop1 });
+    expect((await embed.events('message:load')).at(-1)?.detail).toMatchObject({ modelName: 'tetrahedron.off' });
+
+    const frameWarnings: string[] = [];
+    page.on('console', (message) => {
+      if (message.type() === 'warning' && message.text().includes('[subdivlab]')) frameWarnings.push(message.text());
+    });
+    await page.evaluate(() => {
+      const frame = document.getElementById('frame') as HTMLIFrameElement;
+      const target = frame.contentWindow as Window;
+      target.postMessage('set-level 3', '*');
+      target.postMessage({ subdivlab: 'set-level', level: '3' }, '*');
+      target.postMessage({ subdivlab: 'eval', code: 'alert(1)' }, '*');
+      target.postMessage({ subdivlab: 'set-level', level: 2 }, '*');
+    });
+    const loop2 = expectedClosedCounts('loop', MESHES.tetrahedron, 2);
+    await expect
+      .poll(async () => (await embed.events('message:level-change')).at(-1)?.detail)
+      .toMatchObject({ level: 2, facts: loop2 });
+    expect(frameWarnings).toHaveLength(3);
+    expect(frameWarnings[2]).toContain('unknown command "eval"');
+    // Levels 1 → 2 only: the malformed set-level never ran.
+    const levels = (await embed.events('message:level-change')).map((e) => e.detail.level);
+    expect(levels).not.toContain(3);
+
+    await page.evaluate(() => {
+      const frame = document.getElementById('frame') as HTMLIFrameElement;
+      (frame.contentWindow as Window).postMessage({ subdivlab: 'set-scheme', scheme: 'sqrt3' }, '*');
+    });
+    await expect
+      .poll(async () => (await embed.events('message:level-change')).at(-1)?.detail)
+      .toMatchObject({ level: 2, scheme: 'sqrt3', facts: expectedClosedCounts('sqrt3', MESHES.tetrahedron, 2) });
+  });
+});
+
+test("cancelling one viewer stops only its step; the next viewer's queued step completes", async ({ embed, page }) => {
+  await embed.serve(
+    'e2e/cancel.html',
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Cancel</title>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+<style>subdiv-viewer{width:400px;height:240px}</style></head><body>
+<subdiv-viewer id="big" src="../meshes/cgal/bunny00.off" scheme="loop" levels="0"></subdiv-viewer>
+<subdiv-viewer id="small" src="../meshes/cube.off" scheme="catmull-clark" levels="0"></subdiv-viewer>
+</body></html>`,
+  );
+  await page.goto('./e2e/cancel.html');
+  await embed.waitForLevel('big', 0);
+  await embed.waitForLevel('small', 0);
+  const result = await page.evaluate(async () => {
+    const big = document.getElementById('big') as HTMLElementTagNameMap['subdiv-viewer'];
+    const small = document.getElementById('small') as HTMLElementTagNameMap['subdiv-viewer'];
+    const bigDone = big.setLevel(2);
+    const smallDone = small.setLevel(2);
+    big.cancel();
+    const [bigLevel, smallLevel] = await Promise.all([bigDone, smallDone]);
+    return { bigLevel, smallLevel, smallFacts: small.facts };
+  });
+  expect(result.bigLevel).toBe(0);
+  expect(result.smallLevel).toBe(2);
+  expect(result.smallFacts).toMatchObject({ ...expectedClosedCounts('catmull-clark', MESHES.cube, 2) });
+  expect(await embed.events('error', 'big')).toEqual([]);
+  // The cancelled viewer works on afterwards.
+  expect(
+    await page.evaluate(() => (document.getElementById('big') as HTMLElementTagNameMap['subdiv-viewer']).setLevel(1)),
+  ).toBe(1);
+  expect((await embed.reading('big')).facts?.faces).toBe(4 * 75408);
+});

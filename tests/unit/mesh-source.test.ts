@@ -28,6 +28,10 @@ beforeAll(async () => {
       response.writeHead(200, { 'transfer-encoding': 'chunked' });
       for (let i = 0; i < 10; i++) response.write('y'.repeat(1000));
       response.end();
+    } else if (url.pathname === '/spa/cube.off') {
+      // A single-page-app host answers every path with its index page.
+      response.writeHead(200, { 'content-type': 'text/html; charset=utf-8' });
+      response.end('<!doctype html><title>App</title>');
     } else if (url.pathname === '/mesh') {
       response.writeHead(200);
       response.end('# no extension\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n');
@@ -80,6 +84,12 @@ describe('fetchMesh', () => {
 
   it('stops reading a chunked body as soon as it passes the limit', async () => {
     await expect(fetchMesh('chunked-big.off', base, 2500)).rejects.toThrow(/larger than the limit for URLs/);
+  });
+
+  it('refuses a web page sent in place of the mesh', async () => {
+    await expect(fetchMesh('spa/cube.off', base)).rejects.toThrow(
+      'The server sent a web page, not a mesh: is the URL right?',
+    );
   });
 
   it('reports the server status', async () => {

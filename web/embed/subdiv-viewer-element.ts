@@ -106,7 +106,7 @@ export class SubdivViewerElement extends HTMLElement {
   private readonly darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
   /** The src whose model is shown (or whose load failed: not retried until the attribute changes). */
   private loadedSrc: string | null = null;
-  private loadedRules: string | null = null;
+  private loadedRules = '';
   private syncing: Promise<void> | null = null;
   private syncAgain = false;
   /** Set while the element writes its own attributes (the level it shows), so they do not trigger a sync. */
@@ -170,7 +170,7 @@ export class SubdivViewerElement extends HTMLElement {
       this.viewer?.dispose();
       this.viewer = null;
       this.loadedSrc = null;
-      this.loadedRules = null;
+      this.loadedRules = '';
       this.last = null;
     });
   }
@@ -281,8 +281,9 @@ export class SubdivViewerElement extends HTMLElement {
 
   /** Shows level `n`, computing the levels up to it as needed; resolves with the level shown. */
   async setLevel(n: number): Promise<number> {
+    // Setting the attribute starts the pass (when it changed); wait for that one, not another after it.
     this.levels = Math.max(0, Math.round(n));
-    await this.sync();
+    await (this.syncing ?? this.sync());
     return this.level;
   }
 

@@ -98,6 +98,9 @@ export async function fetchMesh(src: string, base: string, maxBytes = MAX_URL_BY
     );
   }
   if (!response.ok) throw new LoadError(src, `The server answered ${response.status} ${response.statusText}`.trim());
+  if (response.headers.get('content-type')?.startsWith('text/html')) {
+    throw new LoadError(src, 'The server sent a web page, not a mesh: is the URL right?');
+  }
   const declared = Number(response.headers.get('content-length') ?? 'NaN');
   if (declared > maxBytes) {
     throw new LoadError(src, `The file is ${formatMB(declared)}; the limit for URLs is ${formatMB(maxBytes)}.`);
