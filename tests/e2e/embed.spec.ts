@@ -257,3 +257,46 @@ test("cancelling one viewer stops only its step; the next viewer's queued step c
   ).toBe(1);
   expect((await embed.reading('big')).facts?.faces).toBe(4 * 75408);
 });
+
+test.describe('styled by the page', () => {
+  test.use({ colorScheme: 'dark' });
+
+  test('sized by page CSS, parts styled with ::part(), dark background under prefers-color-scheme: dark', async ({
+    embed,
+    page,
+  }) => {
+    await embed.serve(
+      'e2e/styled.html',
+      `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Styled</title>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+<style>
+  #a { width: 420px; height: 260px; }
+  subdiv-viewer::part(level-up) { background-color: rgb(200, 0, 0); }
+</style></head><body>
+<subdiv-viewer id="a" src="../meshes/cube.off" levels="1" controls="minimal"></subdiv-viewer>
+<subdiv-viewer id="b" src="../meshes/cube.off" levels="1" controls="none" background="#ffffff" style="width:300px;height:200px"></subdiv-viewer>
+</body></html>`,
+    );
+    await page.goto('./e2e/styled.html');
+    await embed.waitForLevel('a', 1);
+    await embed.waitForLevel('b', 1);
+    expect(await page.locator('#a').boundingBox()).toMatchObject({ width: 420, height: 260 });
+    const upColour = await page
+      .locator('#a')
+      .evaluate((e) => getComputedStyle(e.shadowRoot?.querySelector('[part="level-up"]') as Element).backgroundColor);
+    expect(upColour).toBe('rgb(200, 0, 0)');
+    expect(
+      await page
+        .locator('#b')
+        .evaluate((e) => (e.shadowRoot?.querySelector('[part="controls"]') as HTMLElement).hidden),
+    ).toBe(true);
+    // A corner pixel of each picture (the view's own 2D canvas): the background, away from the model.
+    const corner = (id: string) =>
+      page.locator(`#${id}`).evaluate((e) => {
+        const canvas = e.shadowRoot?.querySelector('canvas') as HTMLCanvasElement;
+        return Array.from((canvas.getContext('2d') as CanvasRenderingContext2D).getImageData(1, 1, 1, 1).data);
+      });
+    expect(await corner('a')).toEqual([0x1f, 0x23, 0x28, 255]);
+    expect(await corner('b')).toEqual([255, 255, 255, 255]);
+  });
+});

@@ -8,55 +8,27 @@
  * viewport and gives its GPU memory back when it is far from it.
  */
 import type { MeshFacts, SchemeName } from '../core/mesh';
-import { parseRuleSetText } from '../core/rule-set';
-import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
-import { nextRenderMode, type OverlayName, type RenderMode } from '../render/render-mode';
+import { nextRenderMode, type OverlayName } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
 import { el } from '../ui/dom';
 import { faceTypes } from '../ui/facts-panel';
+import { installShortcuts } from '../ui/shortcuts';
 import { handleViewKey } from '../ui/view-keys';
-import { detectFormat, fetchMesh, LoadError, readFile } from '../viewer/mesh-source';
+import { fetchMesh, meshText, readFile } from '../viewer/mesh-source';
+import { fetchRuleSet } from '../viewer/rules-source';
 import { schemeInfo } from '../viewer/scheme-info';
 import { SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
-import type { ControlsMode } from '../viewer/viewer-params';
 import { EmbedControls } from './embed-controls';
-import { type EmbedState, readEmbedState } from './embed-state';
+import {
+  AttributeError,
+  errorDetail,
+  type LevelChangeDetail,
+  type LoadDetail,
+  type ProgressDetail,
+} from './embed-events';
 import { EMBED_CSS } from './embed-styles';
-
-/** `detail` of `load`. */
-export interface LoadDetail {
-  modelName: string;
-  facts: MeshFacts;
-}
-
-/** `detail` of `level-change`: the shown level and its facts. */
-export interface LevelChangeDetail {
-  level: number;
-  /** Levels computed so far (0..levelCount−1). */
-  levelCount: number;
-  scheme: SchemeName;
-  modelName: string | null;
-  facts: MeshFacts;
-}
-
-/** `detail` of `error`. */
-export interface ErrorDetail {
-  /** SubdivError's code, `load_error` (download, file), or `invalid_attribute`. */
-  code: string;
-  message: string;
-  /** 1-based line in the mesh file, 0 when it does not apply. */
-  line: number;
-  /** What failed: the URL, file name or attribute. */
-  source: string;
-}
-
-/** `detail` of `progress`: busy starts and ends. */
-export interface ProgressDetail {
-  busy: boolean;
-  kind: 'load' | 'subdivide' | 'export' | null;
-  label: string;
-}
+import { ViewerAttributes } from './viewer-attributes';
 
 export const OBSERVED_ATTRIBUTES = [
   'src',
@@ -90,7 +62,7 @@ const DISPLAY_ATTRIBUTES = new Set([
 const START_MARGIN = '200px 0px';
 const RELEASE_MARGIN = '150% 0px';
 
-export class SubdivViewerElement extends HTMLElement {
+export class SubdivViewerElement extends ViewerAttributes {
   static readonly observedAttributes = OBSERVED_ATTRIBUTES;
 
   private viewer: SubdivViewer | null = null;
@@ -142,7 +114,7 @@ export class SubdivViewerElement extends HTMLElement {
       fit: () => this.viewer?.fitView(),
     });
     root.append(style, el('div', { className: 'frame' }, this.stage, this.controlBar.element));
-    this.addEventListener('keydown', (event) => this.onKey(event));
+    this.installKeys();
     this.darkQuery.addEventListener('change', () => this.applyDisplay());
   }
 
@@ -179,76 +151,6 @@ export class SubdivViewerElement extends HTMLElement {
     if (oldValue === value || this.reflecting) return;
     if (DISPLAY_ATTRIBUTES.has(name)) this.applyDisplay(name === 'view');
     else void this.sync();
-  }
-
-  // --- Properties, reflected to attributes -------------------------------------------------
-
-  get src(): string {
-    return this.getAttribute('src') ?? '';
-  }
-  set src(value: string) {
-    this.setAttribute('src', value);
-  }
-  get scheme(): SchemeName {
-    return this.readState().scheme;
-  }
-  set scheme(value: SchemeName) {
-    this.setAttribute('scheme', value);
-  }
-  /** The level asked for (and, once computed, shown). */
-  get levels(): number {
-    return this.readState().levels;
-  }
-  set levels(value: number) {
-    this.setAttribute('levels', String(value));
-  }
-  get renderMode(): RenderMode {
-    return this.readState().renderMode;
-  }
-  set renderMode(value: RenderMode) {
-    this.setAttribute('render-mode', value);
-  }
-  get controlMesh(): boolean {
-    return this.readState().overlays.control;
-  }
-  set controlMesh(on: boolean) {
-    this.setFlag('control-mesh', on);
-  }
-  get controlEdges(): boolean {
-    return this.readState().overlays.curves;
-  }
-  set controlEdges(on: boolean) {
-    this.setFlag('control-edges', on);
-  }
-  get rules(): string {
-    return this.getAttribute('rules') ?? '';
-  }
-  set rules(value: string) {
-    this.setAttribute('rules', value);
-  }
-  get view(): string {
-    return this.getAttribute('view') ?? '';
-  }
-  set view(value: string) {
-    this.setAttribute('view', value);
-  }
-  get controls(): ControlsMode {
-    return this.readState().controls;
-  }
-  set controls(value: ControlsMode) {
-    this.setAttribute('controls', value);
-  }
-  get alt(): string {
-    return this.getAttribute('alt') ?? '';
-  }
-  set alt(value: string) {
-    this.setAttribute('alt', value);
-  }
-  get background(): string {
-    return this.getAttribute('background') ?? '';
-  }
-  set background(value: string) {
-    this.setAttribute('background', value);
   }
 
   /** The shown level (−1 before a model is loaded). */
@@ -292,7 +194,7 @@ export class SubdivViewerElement extends HTMLElement {
     const viewer = this.start();
     const fileName = input instanceof File ? input.name : name;
     try {
-      const mesh = input instanceof File ? await readFile(input) : textMesh(input, name);
+      const mesh = input instanceof File ? await readFile(input) : meshText(name, input);
       await viewer.loadText(mesh.text, mesh.format, mesh.name);
       this.loadedSrc = this.src;
       this.hideMessage();
@@ -356,10 +258,6 @@ export class SubdivViewerElement extends HTMLElement {
     return viewer;
   }
 
-  private readState(): EmbedState {
-    return readEmbedState((name) => this.getAttribute(name));
-  }
-
   private levelCountOrZero(): number {
     const state = this.viewer?.state;
     return state && state.levelCount > 0 ? state.level + 1 : 0;
@@ -369,11 +267,6 @@ export class SubdivViewerElement extends HTMLElement {
     const level = this.level;
     if (level < 0) return;
     await this.setLevel(level + delta);
-  }
-
-  private setFlag(name: string, on: boolean): void {
-    if (on) this.setAttribute(name, '');
-    else this.removeAttribute(name);
   }
 
   /**
@@ -422,7 +315,7 @@ export class SubdivViewerElement extends HTMLElement {
       this.loadedRules = want.rules;
       if (want.rules) {
         try {
-          viewer.setSchemeOptions({ rules: await fetchRules(want.rules) });
+          viewer.setSchemeOptions({ rules: await fetchRuleSet(want.rules, document.baseURI) });
         } catch (error) {
           this.fail(want.rules, error);
           return;
@@ -512,52 +405,47 @@ export class SubdivViewerElement extends HTMLElement {
     }
   }
 
-  private onKey(event: KeyboardEvent): void {
-    const viewer = this.viewer;
-    if (!viewer || event.defaultPrevented) return;
-    const target = event.composedPath()[0];
-    if (target instanceof HTMLSelectElement || target instanceof HTMLInputElement) return;
-    if (handleViewKey(viewer.view, event)) return;
-    if (event.ctrlKey || event.metaKey || event.altKey) return;
-    const state = viewer.state;
-    const toggle = (name: string, on: boolean) => this.setFlag(name, !on);
-    const actions: Record<string, () => void> = {
-      s: () => void this.stepLevel(1),
-      ']': () => void this.stepLevel(1),
-      '[': () => void this.stepLevel(-1),
-      r: () => {
-        this.renderMode = nextRenderMode(state.renderMode);
+  /** Camera keys, then the app's shortcuts (ui/shortcuts.ts), on this element only. */
+  private installKeys(): void {
+    this.addEventListener('keydown', (event) => {
+      const target = event.composedPath()[0];
+      if (this.viewer && !(target instanceof HTMLSelectElement) && handleViewKey(this.viewer.view, event)) return;
+    });
+    const toggles: Record<OverlayName, string> = { control: 'control-mesh', curves: 'control-edges', bbox: 'bbox' };
+    installShortcuts(
+      this,
+      {
+        subdivide: () => void this.stepLevel(1),
+        stepLevel: (delta) => void this.stepLevel(delta),
+        cycleRenderMode: () => {
+          this.renderMode = nextRenderMode(this.renderMode);
+        },
+        toggleOverlay: (name) => this.setFlag(toggles[name], !this.readState().overlays[name]),
+        fit: () => this.viewer?.fitView(),
+        cancel: () => this.viewer?.cancel(),
+        copyImage: () => void this.copyImage(),
       },
-      c: () => toggle('control-mesh', state.overlays.control),
-      e: () => toggle('control-edges', state.overlays.curves),
-      b: () => toggle('bbox', state.overlays.bbox),
-      f: () => viewer.fitView(),
-      Escape: () => viewer.cancel(),
-    };
-    const action = actions[event.key.length === 1 ? event.key.toLowerCase() : event.key];
-    if (!action) return;
-    event.preventDefault();
-    event.stopPropagation();
-    action();
+      () => !this.viewer,
+    );
+  }
+
+  private async copyImage(): Promise<void> {
+    if (this.level < 0) return;
+    try {
+      await navigator.clipboard.write([new ClipboardItem({ 'image/png': this.exportPng(1) })]);
+    } catch (error) {
+      this.fail('Clipboard', error);
+    }
   }
 
   private fail(source: string, error: unknown): void {
     if (error instanceof CancelledError) return;
-    const message = error instanceof Error ? error.message : String(error);
-    const code =
-      error instanceof SubdivError
-        ? error.code
-        : error instanceof LoadError
-          ? 'load_error'
-          : error instanceof AttributeError
-            ? 'invalid_attribute'
-            : 'error';
-    const line = error instanceof SubdivError ? error.line : 0;
-    const where = error instanceof LoadError ? error.source : source;
-    this.message.textContent = `${where}: ${line > 0 && !/\bline \d/.test(message) ? `line ${line}: ` : ''}${message}`;
+    const detail = errorDetail(source, error);
+    const { line, message } = detail;
+    this.message.textContent = `${detail.source}: ${line > 0 && !/\bline \d/.test(message) ? `line ${line}: ` : ''}${message}`;
     this.message.hidden = false;
     this.placeholder.hidden = true;
-    this.dispatch('error', { code, message, line, source: where } as ErrorDetail);
+    this.dispatch('error', detail);
   }
 
   private hideMessage(): void {
@@ -567,24 +455,4 @@ export class SubdivViewerElement extends HTMLElement {
   private dispatch(type: string, detail: unknown): void {
     this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
   }
-}
-
-/** A bad attribute value. */
-class AttributeError extends Error {}
-
-function textMesh(text: string, name: string) {
-  const format = detectFormat(name, text);
-  if (!format) throw new LoadError(name, 'This is not an OFF or OBJ mesh.');
-  return { name, text, format };
-}
-
-async function fetchRules(url: string) {
-  let response: Response;
-  try {
-    response = await fetch(new URL(url, document.baseURI), { credentials: 'omit' });
-  } catch {
-    throw new LoadError(url, 'The rule file could not be downloaded.');
-  }
-  if (!response.ok) throw new LoadError(url, `The server answered ${response.status} for the rule file.`);
-  return parseRuleSetText(await response.text());
 }

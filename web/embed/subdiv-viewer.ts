@@ -5,7 +5,7 @@
  */
 import { SubdivViewerElement } from './subdiv-viewer-element';
 
-export type { ErrorDetail, LevelChangeDetail, LoadDetail, ProgressDetail } from './subdiv-viewer-element';
+export type { ErrorDetail, LevelChangeDetail, LoadDetail, ProgressDetail } from './embed-events';
 export { SubdivViewerElement };
 
 if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', SubdivViewerElement);

@@ -7,7 +7,8 @@ export interface ShortcutHandlers {
   toggleOverlay: (name: OverlayName) => void;
   fit: () => void;
   stepLevel: (delta: number) => void;
-  open: () => void;
+  /** Absent where there is no file to open (an embedded viewer). */
+  open?: () => void;
   cancel: () => void;
   copyImage: () => void;
 }
@@ -39,13 +40,22 @@ function isTyping(target: EventTarget | null): boolean {
   return false;
 }
 
-/** Installs the shortcuts on `root`; returns the function that removes them. */
-export function installShortcuts(root: Document, handlers: ShortcutHandlers, blocked: () => boolean): () => void {
+/**
+ * Installs the shortcuts on `root` (the page, or one viewer element: then
+ * they act only while it has focus); returns the function that removes them.
+ */
+export function installShortcuts(
+  root: Document | HTMLElement,
+  handlers: ShortcutHandlers,
+  blocked: () => boolean,
+): () => void {
   const onKeyDown = (event: KeyboardEvent) => {
-    if (event.defaultPrevented || isTyping(event.target) || blocked()) return;
+    // The innermost target: inside a shadow root, event.target is only its host.
+    const target = event.composedPath()[0] ?? event.target;
+    if (event.defaultPrevented || isTyping(target) || blocked()) return;
     if ((event.ctrlKey || event.metaKey) && !event.altKey && event.key.toLowerCase() === 'c') {
       // Leave Ctrl+C alone when the user selected text to copy.
-      if (root.getSelection()?.toString()) return;
+      if (document.getSelection()?.toString()) return;
       event.preventDefault();
       handlers.copyImage();
       return;
@@ -60,7 +70,7 @@ export function installShortcuts(root: Document, handlers: ShortcutHandlers, blo
       f: handlers.fit,
       '[': () => handlers.stepLevel(-1),
       ']': () => handlers.stepLevel(1),
-      o: handlers.open,
+      ...(handlers.open ? { o: handlers.open } : {}),
       Escape: handlers.cancel,
     };
     const run = action[event.key.length === 1 ? event.key.toLowerCase() : event.key];
@@ -68,6 +78,7 @@ export function installShortcuts(root: Document, handlers: ShortcutHandlers, blo
     event.preventDefault();
     run();
   };
-  root.addEventListener('keydown', onKeyDown);
-  return () => root.removeEventListener('keydown', onKeyDown);
+  const listener = onKeyDown as EventListener;
+  root.addEventListener('keydown', listener);
+  return () => root.removeEventListener('keydown', listener);
 }

@@ -43,7 +43,8 @@ export function detectFormat(name: string, text: string): MeshFormat | null {
   return null;
 }
 
-function withFormat(name: string, text: string): MeshText {
+/** Mesh text named `name`, with its format (from the name, else from the text); refuses what is neither OFF nor OBJ. */
+export function meshText(name: string, text: string): MeshText {
   const format = detectFormat(name, text);
   if (!format) throw new LoadError(name, 'This is not an OFF or OBJ file (expected a .off or .obj mesh).');
   return { name, text, format };
@@ -55,7 +56,7 @@ export async function readFile(file: File): Promise<MeshText> {
     throw new LoadError(file.name, `The file is ${formatMB(file.size)}; the limit is ${formatMB(MAX_FILE_BYTES)}.`);
   }
   if (file.size === 0) throw new LoadError(file.name, 'The file is empty.');
-  return withFormat(file.name, await file.text());
+  return meshText(file.name, await file.text());
 }
 
 function formatMB(bytes: number): string {
@@ -106,7 +107,7 @@ export async function fetchMesh(src: string, base: string, maxBytes = MAX_URL_BY
     throw new LoadError(src, `The file is ${formatMB(declared)}; the limit for URLs is ${formatMB(maxBytes)}.`);
   }
   const text = await readLimited(response, maxBytes, src);
-  return withFormat(name, text);
+  return meshText(name, text);
 }
 
 async function readLimited(response: Response, maxBytes: number, src: string): Promise<string> {

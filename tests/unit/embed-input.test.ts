@@ -1,0 +1,130 @@
+/**
+ * What a page can hand an embedded viewer: the element's attributes
+ * (web/embed/embed-state.ts) and the iframe route's postMessage commands
+ * (web/embed/embed-messages.ts). Bad input is named, never guessed or run.
+ */
+import { describe, expect, it } from 'vitest';
+import { checkCommand } from '../../web/embed/embed-messages';
+import { readEmbedState } from '../../web/embed/embed-state';
+
+const attrs = (values: Record<string, string>) => (name: string) => values[name] ?? null;
+
+describe('element attributes', () => {
+  it('default to Catmull-Clark level 0, smooth, minimal controls, no overlays', () => {
+    expect(readEmbedState(attrs({}))).toEqual({
+      src: '',
+      scheme: 'catmull-clark',
+      levels: 0,
+      renderMode: 'smooth',
+      overlays: { control: false, curves: false, bbox: false },
+      triangulate: false,
+      rules: '',
+      view: null,
+      controls: 'minimal',
+      alt: '',
+      background: null,
+      problems: [],
+    });
+  });
+
+  it('read every attribute; a bare boolean attribute is on', () => {
+    const state = readEmbedState(
+      attrs({
+        src: ' meshes/torus.off ',
+        scheme: 'loop',
+        levels: '3',
+        'render-mode': 'edges',
+        'control-mesh': '',
+        'control-edges': 'true',
+        bbox: '0',
+        triangulate: '',
+        rules: 'rules/loop.json',
+        view: '1,2,3,0,0,0,0,1,0',
+        controls: 'full',
+        alt: 'A torus',
+        background: 'transparent',
+      }),
+    );
+    expect(state).toMatchObject({
+      src: 'meshes/torus.off',
+      scheme: 'loop',
+      levels: 3,
+      renderMode: 'edges',
+      overlays: { control: true, curves: true, bbox: false },
+      triangulate: true,
+      rules: 'rules/loop.json',
+      view: { position: [1, 2, 3], target: [0, 0, 0], up: [0, 1, 0] },
+      controls: 'full',
+      alt: 'A torus',
+      background: 'transparent',
+      problems: [],
+    });
+  });
+
+  it('fall back to the default for a bad value and name the attribute', () => {
+    const state = readEmbedState(
+      attrs({ scheme: 'butterfly', levels: 'two', 'render-mode': 'x', view: '1,2', controls: 'all', bbox: 'maybe' }),
+    );
+    expect(state).toMatchObject({
+      scheme: 'catmull-clark',
+      levels: 0,
+      renderMode: 'smooth',
+      view: null,
+      controls: 'minimal',
+    });
+    expect(state.problems.map((p) => p.attribute)).toEqual([
+      'scheme',
+      'levels',
+      'render-mode',
+      'view',
+      'controls',
+      'bbox',
+    ]);
+    expect(state.problems[1].message).toBe('levels must be a whole number from 0 to 8, not "two".');
+  });
+});
+
+describe('iframe commands', () => {
+  it('accept the documented commands with their fields', () => {
+    expect(checkCommand({ subdivlab: 'load', src: 'meshes/cube.off' })).toEqual({
+      ok: true,
+      command: { subdivlab: 'load', src: 'meshes/cube.off' },
+    });
+    expect(checkCommand({ subdivlab: 'load', text: 'OFF\n', name: 'a.off', extra: 1 })).toEqual({
+      ok: true,
+      command: { subdivlab: 'load', text: 'OFF\n', name: 'a.off' },
+    });
+    expect(checkCommand({ subdivlab: 'set-scheme', scheme: 'doo-sabin' })).toMatchObject({ ok: true });
+    expect(checkCommand({ subdivlab: 'subdivide' })).toEqual({ ok: true, command: { subdivlab: 'subdivide' } });
+    expect(checkCommand({ subdivlab: 'set-level', level: 0 })).toMatchObject({ ok: true });
+    expect(checkCommand({ subdivlab: 'set-view', view: '1,2,3,0,0,0,0,1,0' })).toEqual({
+      ok: true,
+      command: { subdivlab: 'set-view', view: { position: [1, 2, 3], target: [0, 0, 0], up: [0, 1, 0] } },
+    });
+    expect(
+      checkCommand({ subdivlab: 'set-view', view: { position: [0, 0, 5], target: [0, 0, 0], up: [0, 1, 0] } }),
+    ).toMatchObject({ ok: true });
+  });
+
+  it.each([
+    [null, 'a command is an object { subdivlab: NAME, ... }'],
+    ['set-level 2', 'a command is an object { subdivlab: NAME, ... }'],
+    [[1, 2], 'a command is an object { subdivlab: NAME, ... }'],
+    [{ subdivlab: 'eval', code: '1' }, 'unknown command "eval"'],
+    [{ type: 'subdivide' }, 'unknown command undefined'],
+    [{ subdivlab: 'load' }, 'load needs src (a URL) or text and name (the mesh file)'],
+    [{ subdivlab: 'load', src: 42 }, 'load needs src (a URL) or text and name (the mesh file)'],
+    [{ subdivlab: 'set-scheme', scheme: 'toString' }, 'set-scheme: unknown scheme "toString"'],
+    [{ subdivlab: 'set-level', level: '2' }, 'set-level needs level, a whole number ≥ 0'],
+    [{ subdivlab: 'set-level', level: 1.5 }, 'set-level needs level, a whole number ≥ 0'],
+    [{ subdivlab: 'set-level', level: -1 }, 'set-level needs level, a whole number ≥ 0'],
+    [{ subdivlab: 'set-level', level: 9 }, 'set-level: at most 8'],
+    [{ subdivlab: 'set-view', view: '1,2,3' }, 'set-view needs view: nine numbers, or { position, target, up }'],
+    [
+      { subdivlab: 'set-view', view: { position: [0, 0, 1] } },
+      'set-view needs view: nine numbers, or { position, target, up }',
+    ],
+  ])('refuse %j: %s', (data, reason) => {
+    expect(checkCommand(data)).toEqual({ ok: false, reason });
+  });
+});

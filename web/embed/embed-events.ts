@@ -1,0 +1,60 @@
+/** What `<subdiv-viewer>`'s events carry (the iframe route posts the same to its parent). */
+import type { MeshFacts, SchemeName } from '../core/mesh';
+import { SubdivError } from '../core/subdiv-error';
+import { LoadError } from '../viewer/mesh-source';
+
+/** `detail` of `load`. */
+export interface LoadDetail {
+  modelName: string;
+  facts: MeshFacts;
+}
+
+/** `detail` of `level-change`: the shown level and its facts. */
+export interface LevelChangeDetail {
+  level: number;
+  /** Levels computed so far (0..levelCount−1). */
+  levelCount: number;
+  scheme: SchemeName;
+  modelName: string | null;
+  facts: MeshFacts;
+}
+
+/** `detail` of `error`. */
+export interface ErrorDetail {
+  /** SubdivError's code, `load_error` (download, file), or `invalid_attribute`. */
+  code: string;
+  message: string;
+  /** 1-based line in the mesh file, 0 when it does not apply. */
+  line: number;
+  /** What failed: the URL, file name or attribute. */
+  source: string;
+}
+
+/** `detail` of `progress`: busy starts and ends. */
+export interface ProgressDetail {
+  busy: boolean;
+  kind: 'load' | 'subdivide' | 'export' | null;
+  label: string;
+}
+
+/** A bad attribute value. */
+export class AttributeError extends Error {}
+
+/** The `error` event's detail for a failure about `source`. */
+export function errorDetail(source: string, error: unknown): ErrorDetail {
+  const message = error instanceof Error ? error.message : String(error);
+  const code =
+    error instanceof SubdivError
+      ? error.code
+      : error instanceof LoadError
+        ? 'load_error'
+        : error instanceof AttributeError
+          ? 'invalid_attribute'
+          : 'error';
+  return {
+    code,
+    message,
+    line: error instanceof SubdivError ? error.line : 0,
+    source: error instanceof LoadError ? error.source : source,
+  };
+}

@@ -1,0 +1,90 @@
+/**
+ * The attributes of `<subdiv-viewer>` as typed properties, reflected both
+ * ways (a property writes its attribute; the element reacts to attributes
+ * only). Reading goes through embed-state.ts, so a bad attribute reads as
+ * its default.
+ */
+import type { SchemeName } from '../core/mesh';
+import type { RenderMode } from '../render/render-mode';
+import type { ControlsMode } from '../viewer/viewer-params';
+import { type EmbedState, readEmbedState } from './embed-state';
+
+export class ViewerAttributes extends HTMLElement {
+  get src(): string {
+    return this.getAttribute('src') ?? '';
+  }
+  set src(value: string) {
+    this.setAttribute('src', value);
+  }
+  get scheme(): SchemeName {
+    return this.readState().scheme;
+  }
+  set scheme(value: SchemeName) {
+    this.setAttribute('scheme', value);
+  }
+  /** The level asked for (and, once computed, shown). */
+  get levels(): number {
+    return this.readState().levels;
+  }
+  set levels(value: number) {
+    this.setAttribute('levels', String(value));
+  }
+  get renderMode(): RenderMode {
+    return this.readState().renderMode;
+  }
+  set renderMode(value: RenderMode) {
+    this.setAttribute('render-mode', value);
+  }
+  get controlMesh(): boolean {
+    return this.readState().overlays.control;
+  }
+  set controlMesh(on: boolean) {
+    this.setFlag('control-mesh', on);
+  }
+  get controlEdges(): boolean {
+    return this.readState().overlays.curves;
+  }
+  set controlEdges(on: boolean) {
+    this.setFlag('control-edges', on);
+  }
+  get rules(): string {
+    return this.getAttribute('rules') ?? '';
+  }
+  set rules(value: string) {
+    this.setAttribute('rules', value);
+  }
+  get view(): string {
+    return this.getAttribute('view') ?? '';
+  }
+  set view(value: string) {
+    this.setAttribute('view', value);
+  }
+  get controls(): ControlsMode {
+    return this.readState().controls;
+  }
+  set controls(value: ControlsMode) {
+    this.setAttribute('controls', value);
+  }
+  get alt(): string {
+    return this.getAttribute('alt') ?? '';
+  }
+  set alt(value: string) {
+    this.setAttribute('alt', value);
+  }
+  get background(): string {
+    return this.getAttribute('background') ?? '';
+  }
+  set background(value: string) {
+    this.setAttribute('background', value);
+  }
+
+  protected readState(): EmbedState {
+    return readEmbedState((name) => this.getAttribute(name));
+  }
+
+  /** A boolean attribute: present when on. */
+  protected setFlag(name: string, on: boolean): void {
+    if (on) this.setAttribute(name, '');
+    else this.removeAttribute(name);
+  }
+}
