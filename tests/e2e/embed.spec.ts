@@ -286,9 +286,7 @@ test.describe('styled by the page', () => {
       .evaluate((e) => getComputedStyle(e.shadowRoot?.querySelector('[part="level-up"]') as Element).backgroundColor);
     expect(upColour).toBe('rgb(200, 0, 0)');
     expect(
-      await page
-        .locator('#b')
-        .evaluate((e) => (e.shadowRoot?.querySelector('[part="controls"]') as HTMLElement).hidden),
+      await page.locator('#b').evaluate((e) => e.shadowRoot?.querySelector<HTMLElement>('[part="controls"]')?.hidden),
     ).toBe(true);
     // A corner pixel of each picture (the view's own 2D canvas): the background, away from the model.
     const corner = (id: string) =>
