@@ -1,4 +1,4 @@
-/** Entry point of the SubdivLab page: builds the app shell, exposes the test API, honours ?src=. */
+/** Entry point of the SubdivLab page: builds the app shell, exposes the test API, applies the URL's state. */
 import { AppShell } from './app/app-shell';
 import './ui/app.css';
 
@@ -6,4 +6,4 @@ const root = document.getElementById('app');
 if (!root) throw new Error('index.html has no #app element');
 const app = new AppShell(root);
 window.__subdivlab = app.testApi();
-void app.loadFromQuery(window.location.search);
+void app.start();

@@ -18,6 +18,9 @@ export interface ShownFacts {
   faceTypes: string;
 }
 
+/** A link state with no model: the app opens empty (no first-visit sample). */
+export const EMPTY_STATE = '#scheme=catmull-clark';
+
 export class SubdivLabPage {
   constructor(readonly page: Page) {}
 
@@ -33,10 +36,32 @@ export class SubdivLabPage {
     return this.byTestId('error.banner');
   }
 
-  /** Opens the app (with an optional query) and waits for the WASM core. */
-  async open(query = ''): Promise<void> {
+  /**
+   * Opens the app at `./` + `query` and waits for the WASM core. The default
+   * is a link state without a model (`#scheme=catmull-clark`): the app starts
+   * empty, as the tests that drop their own file expect. A bare `./` is a first
+   * visit, which loads a sample (see {@link openFirstVisit}).
+   */
+  async open(query = EMPTY_STATE): Promise<void> {
     await this.page.goto(`./${query}`);
     await this.page.waitForFunction(() => window.__subdivlab?.state().ready === true, undefined, { timeout: 30_000 });
+  }
+
+  /** Opens the app with no hash and no ?src= and waits until its sample is loaded and idle. */
+  async openFirstVisit(): Promise<SubdivLabTestState> {
+    await this.open('');
+    await expect(this.byTestId('viewer.first-visit')).toBeVisible();
+    return this.idle();
+  }
+
+  /** The page's URL hash, parsed (without the `#`). */
+  async hashParams(): Promise<URLSearchParams> {
+    return new URLSearchParams((await this.page.evaluate(() => window.location.hash)).replace(/^#/, ''));
+  }
+
+  /** Waits until the URL hash has `key` = `value` (the app writes it about 300 ms after a change). */
+  async waitForHash(key: string, value: string): Promise<void> {
+    await expect.poll(async () => (await this.hashParams()).get(key)).toBe(value);
   }
 
   async state(): Promise<SubdivLabTestState> {

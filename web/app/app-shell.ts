@@ -1,43 +1,53 @@
 /**
  * The SubdivLab page: one SubdivViewer composed with the panels (samples,
- * scheme, custom rules, levels, display, facts, export), the drop zone, the
- * error banner, the progress overlay and the keyboard shortcuts. Every failure ends in
- * {@link AppShell.showError}, the one place errors are shown.
+ * scheme, custom rules, levels, display, facts, export, share and embed), the
+ * drop zone, the error banner, the progress overlay and the keyboard
+ * shortcuts; its state lives in the URL hash (url-state.ts). Every failure
+ * ends in {@link AppShell.showError}, the one place errors are shown.
  */
+import type { SchemeName } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
 import { nextRenderMode } from '../render/render-mode';
-import { parseViewState, type ViewState } from '../render/view-state';
+import { cameraKey } from '../ui/camera-keys';
 import { ConfirmDialog } from '../ui/confirm-dialog';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
 import { button, el } from '../ui/dom';
 import { DropZone } from '../ui/drop-zone';
+import { EmbedDialog } from '../ui/embed-dialog';
 import { ErrorBanner } from '../ui/error-banner';
 import { ExportPanel } from '../ui/export-panel';
 import { FactsPanel } from '../ui/facts-panel';
 import { createGallery } from '../ui/gallery';
 import { LevelPanel } from '../ui/level-panel';
+import { NoticeBar } from '../ui/notice-bar';
 import { ProgressOverlay } from '../ui/progress-overlay';
 import { RulesPanel } from '../ui/rules-panel';
-import { saveBlob } from '../ui/save-blob';
 import { SchemePanel } from '../ui/scheme-panel';
-import { installShortcuts, SHORTCUTS } from '../ui/shortcuts';
-import { exportFileName } from '../viewer/file-names';
+import { SharePanel } from '../ui/share-panel';
+import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
 import { formatBytes } from '../viewer/memory-budget';
 import { fetchMesh, LoadError, type MeshText, readFile } from '../viewer/mesh-source';
 import { checkRulesInCore } from '../viewer/rules-check';
 import { hostLabel, hostNeedsTriangles, schemeInfo } from '../viewer/scheme-info';
 import { type LargeStepInfo, type SchemeOptions, SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
+import { ExportActions } from './export-actions';
 import { SAMPLES } from './samples';
+import { savedView, saveView } from './saved-view';
+import { type ModelSource, ShareActions } from './share-actions';
 import type { SubdivLabTestApi, TestError } from './test-api';
-
-const VIEW_STORAGE_KEY = 'subdivlab.view';
+import { FIRST_VISIT, UrlState } from './url-state';
 
 export class AppShell {
   readonly viewer: SubdivViewer;
   private readonly errors = new ErrorBanner();
+  private readonly notice = new NoticeBar();
   private readonly confirm = new ConfirmDialog();
+  private readonly embedDialog = new EmbedDialog();
+  private readonly sharePanel: SharePanel;
+  private readonly shareActions: ShareActions;
+  private readonly urlState: UrlState;
   private readonly progress: ProgressOverlay;
   private readonly scheme: SchemePanel;
   private readonly rules: RulesPanel;
@@ -45,14 +55,18 @@ export class AppShell {
   private readonly display: DisplayPanel;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
+  private readonly exportActions: ExportActions;
   private readonly modelName: HTMLElement;
   private readonly emptyHint: HTMLElement;
+  private readonly firstVisitHint: HTMLElement;
   private readonly fileInput: HTMLInputElement;
   private lastError: TestError | null = null;
   private schemes: string[] = [];
   /** Rules of the custom scheme (from the rules panel) and quad-triangle's border option. */
   private customRules: RuleSet | null = null;
   private fixedBoundary = false;
+  /** Where the shown model came from (null before the first load). */
+  private source: ModelSource | null = null;
 
   constructor(root: HTMLElement) {
     this.fileInput = el('input', {
@@ -75,22 +89,25 @@ export class AppShell {
         'aria-label': '3D view: drag or arrow keys rotate, right-drag or Shift+arrows pan, wheel or +/− zoom',
       },
     });
-    stage.addEventListener('keydown', (event) => this.onViewKey(event));
+    stage.addEventListener('keydown', (event) => cameraKey(event, this.viewer.view));
     this.emptyHint = el(
       'div',
       { testId: 'viewer.empty', className: 'empty-hint' },
       el('p', { text: 'Drop an OFF or OBJ file anywhere, open one, or pick a sample.' }),
     );
+    this.firstVisitHint = el('p', {
+      testId: 'viewer.first-visit',
+      className: 'first-visit-hint',
+      text: 'A sample to start with: drop an OFF or OBJ file anywhere (or use Open…) to subdivide your own.',
+    });
+    this.firstVisitHint.hidden = true;
     this.viewer = new SubdivViewer(stage, { confirmLargeStep: (info) => this.confirmLargeStep(info) });
     this.progress = new ProgressOverlay(() => this.viewer.cancel());
-    stage.append(this.emptyHint, this.facts.element, this.progress.element);
+    this.exportActions = new ExportActions(this.viewer, (source, error) => this.showError(source, error));
+    stage.append(this.emptyHint, this.firstVisitHint, this.facts.element, this.progress.element);
 
     this.scheme = new SchemePanel({
-      onScheme: (s) => {
-        this.viewer.setScheme(s);
-        this.viewer.setSchemeOptions(this.schemeOptions());
-        if (s === 'custom') void this.rules.ensureRules();
-      },
+      onScheme: (s) => this.setScheme(s),
       onTriangulate: (t) => this.viewer.setTriangulate(t),
       onFixedBoundary: (fixed) => {
         this.fixedBoundary = fixed;
@@ -113,15 +130,40 @@ export class AppShell {
       onRenderMode: (m) => this.viewer.setRenderMode(m),
       onOverlay: (name, on) => this.viewer.setOverlay(name, on),
       onFit: () => this.viewer.fitView(),
-      onSaveView: () => this.saveView(),
-      onRestoreView: () => this.restoreView(),
+      onSaveView: () => {
+        saveView(this.viewer.getView());
+        this.update(this.viewer.state);
+      },
+      onRestoreView: () => {
+        const view = savedView();
+        if (view) this.viewer.setView(view);
+      },
     });
     this.exports = new ExportPanel({
-      onPng: (scale, transparent) => void this.exportPng(scale, transparent),
-      onCopy: (transparent) => void this.copyImage(transparent),
-      onSvg: (transparent) => this.exportSvg(transparent),
-      onMesh: (format) => void this.exportMesh(format),
+      onPng: (scale, transparent) => void this.exportActions.png(scale, transparent),
+      onCopy: (transparent) => void this.exportActions.copyImage(transparent),
+      onSvg: (transparent) => this.exportActions.svg(transparent),
+      onMesh: (format) => void this.exportActions.mesh(format),
     });
+
+    this.urlState = new UrlState({
+      viewer: this.viewer,
+      modelSrc: () => (this.source?.kind === 'url' ? this.source.src : null),
+      openUrl: (src) => this.openUrl(src, src),
+      setScheme: (scheme) => this.setScheme(scheme),
+      subdivide: () => this.subdivide(),
+      linkProblems: (problems) =>
+        this.notice.show(problems.length > 0 ? `Parts of this link were ignored: ${problems.join(' ')}` : ''),
+    });
+    this.sharePanel = new SharePanel({
+      onShare: () => void this.shareActions.share(),
+      onEmbed: () => this.shareActions.embed(),
+    });
+    this.shareActions = new ShareActions(
+      { viewer: this.viewer, modelSource: () => this.source, params: () => this.urlState.params() },
+      this.sharePanel,
+      this.embedDialog,
+    );
 
     this.modelName = el('span', { testId: 'app.model-name', className: 'model-name', text: 'No model loaded' });
     const header = el(
@@ -132,22 +174,16 @@ export class AppShell {
       this.fileInput,
       createGallery(SAMPLES, (sample) => void this.openUrl(sample.path, sample.path.split('/').pop() ?? sample.id)),
       this.exports.element,
+      this.sharePanel.element,
       this.modelName,
+      el('a', {
+        testId: 'app.examples',
+        className: 'header-link',
+        text: 'Teaching examples',
+        attrs: { href: 'examples/', title: 'Pages that embed SubdivLab views, to copy from' },
+      }),
     );
 
-    const help = el(
-      'details',
-      { className: 'panel shortcuts', testId: 'help' },
-      el('summary', { text: 'Keyboard shortcuts' }),
-      el(
-        'dl',
-        {},
-        ...SHORTCUTS.flatMap(({ keys, action }) => [
-          el('dt', {}, el('kbd', { text: keys })),
-          el('dd', { text: action }),
-        ]),
-      ),
-    );
     const sidebar = el(
       'aside',
       { className: 'sidebar', attrs: { 'aria-label': 'Controls' } },
@@ -155,15 +191,16 @@ export class AppShell {
       this.rules.element,
       this.levels.element,
       this.display.element,
-      help,
+      shortcutsHelp(),
     );
-    const main = el('main', { className: 'app-main' }, this.errors.element, stage);
+    const main = el('main', { className: 'app-main' }, this.errors.element, this.notice.element, stage);
     const dropZone = new DropZone(document, (file) => void this.openFile(file));
     root.replaceChildren(
       header,
       el('div', { className: 'app-body' }, sidebar, main),
       dropZone.element,
       this.confirm.element,
+      this.embedDialog.element,
     );
 
     this.viewer.onChange((state) => this.update(state));
@@ -183,9 +220,9 @@ export class AppShell {
         stepLevel: (delta) => this.viewer.setLevel(this.viewer.state.level + delta),
         open: () => this.fileInput.click(),
         cancel: () => this.viewer.cancel(),
-        copyImage: () => void this.copyImage(false),
+        copyImage: () => void this.exportActions.copyImage(false),
       },
-      () => this.confirm.open,
+      () => this.confirm.open || this.embedDialog.open,
     );
 
     this.viewer
@@ -223,25 +260,36 @@ export class AppShell {
           edgeSegments: this.viewer.view.edgeSegments(),
           customRules: this.customRules,
           smoothBoundary: !this.fixedBoundary,
+          modelSource: this.source ? { ...this.source } : null,
+          notice: this.notice.text,
         };
+      },
+      shareLink: () => {
+        const result = this.shareActions.link();
+        return 'link' in result ? result.link : null;
       },
       positions: () => Array.from(this.viewer.mesh?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
     };
   }
 
-  /** Loads `?src=URL` if the page has one. */
-  async loadFromQuery(search: string): Promise<void> {
-    const src = new URLSearchParams(search).get('src');
-    if (src) await this.openUrl(src, src);
+  /**
+   * Applies the page's URL: the state in its hash, `?src=URL`, or on a first
+   * visit (neither) a sample with a line on how to open one's own file.
+   */
+  async start(): Promise<void> {
+    const firstVisit = window.location.hash.length <= 1 && !new URLSearchParams(window.location.search).has('src');
+    await this.urlState.start();
+    const sample = this.source?.kind === 'url' && this.source.src === FIRST_VISIT.src;
+    this.firstVisitHint.hidden = !(firstVisit && sample);
   }
 
-  async openFile(file: File): Promise<void> {
-    await this.openText(file.name, () => readFile(file));
+  async openFile(file: File): Promise<boolean> {
+    return this.openText(file.name, () => readFile(file), { kind: 'file', name: file.name });
   }
 
-  async openUrl(src: string, displayName: string): Promise<void> {
-    await this.openText(displayName, () => fetchMesh(src, document.baseURI));
+  async openUrl(src: string, displayName: string): Promise<boolean> {
+    return this.openText(displayName, () => fetchMesh(src, document.baseURI), { kind: 'url', src });
   }
 
   /** Shows the error about `source`; the previous model and its levels stay. */
@@ -267,15 +315,28 @@ export class AppShell {
     this.errors.show(where, message, action);
   }
 
-  private async openText(name: string, read: () => Promise<MeshText>): Promise<void> {
+  private async openText(name: string, read: () => Promise<MeshText>, source: ModelSource): Promise<boolean> {
     try {
       const mesh = await read();
       await this.viewer.loadText(mesh.text, mesh.format, mesh.name);
+      if (this.viewer.state.modelName !== mesh.name) return false;
+      this.source = source;
+      this.firstVisitHint.hidden = true;
+      this.sharePanel.clear();
       this.errors.hide();
       this.lastError = null;
+      return true;
     } catch (error) {
       this.showError(name, error);
+      return false;
     }
+  }
+
+  /** Chooses a scheme (menu or link): levels of the previous one are dropped. */
+  private setScheme(scheme: SchemeName): void {
+    this.viewer.setScheme(scheme);
+    this.viewer.setSchemeOptions(this.schemeOptions());
+    if (scheme === 'custom') void this.rules.ensureRules();
   }
 
   private async subdivide(): Promise<boolean> {
@@ -311,31 +372,6 @@ export class AppShell {
     }
   }
 
-  /** Camera keys while the view has focus: arrows rotate, Shift+arrows pan, +/− zoom. */
-  private onViewKey(event: KeyboardEvent): void {
-    if (event.ctrlKey || event.metaKey || event.altKey) return;
-    const view = this.viewer.view;
-    const step = 10;
-    const moves: Record<string, () => void> = event.shiftKey
-      ? {
-          ArrowLeft: () => view.pan(0.05, 0),
-          ArrowRight: () => view.pan(-0.05, 0),
-          ArrowUp: () => view.pan(0, -0.05),
-          ArrowDown: () => view.pan(0, 0.05),
-        }
-      : {
-          ArrowLeft: () => view.orbit(-step, 0),
-          ArrowRight: () => view.orbit(step, 0),
-          ArrowUp: () => view.orbit(0, -step),
-          ArrowDown: () => view.orbit(0, step),
-        };
-    const zooms: Record<string, number> = { '+': 1 / 1.2, '=': 1 / 1.2, '-': 1.2, _: 1.2 };
-    const move = moves[event.key] ?? (event.key in zooms ? () => view.zoom(zooms[event.key]) : undefined);
-    if (!move) return;
-    event.preventDefault();
-    move();
-  }
-
   private confirmLargeStep(info: LargeStepInfo): Promise<boolean> {
     const p = info.prediction;
     const label = schemeInfo(this.viewer.state.scheme).label;
@@ -346,62 +382,6 @@ export class AppShell {
         `this tab can probably give ${formatBytes(info.budgetBytes)}. The step may fail or make the page slow.`,
       'Subdivide anyway',
     );
-  }
-
-  private saveView(): void {
-    localStorage.setItem(VIEW_STORAGE_KEY, JSON.stringify(this.viewer.getView()));
-    this.update(this.viewer.state);
-  }
-
-  private savedView(): ViewState | null {
-    return parseViewState(localStorage.getItem(VIEW_STORAGE_KEY));
-  }
-
-  private restoreView(): void {
-    const view = this.savedView();
-    if (view) this.viewer.setView(view);
-  }
-
-  private fileName(extension: string): string {
-    const s = this.viewer.state;
-    return exportFileName(s.modelName, s.scheme, s.level, extension);
-  }
-
-  private async exportPng(scale: number, transparent: boolean): Promise<void> {
-    try {
-      saveBlob(await this.viewer.exportPng(scale, transparent), this.fileName('png'));
-    } catch (error) {
-      this.showError(this.fileName('png'), error);
-    }
-  }
-
-  private async copyImage(transparent: boolean): Promise<void> {
-    if (this.viewer.state.levelCount === 0) return;
-    try {
-      // Hand the promise to ClipboardItem at once: Safari needs the user gesture to be current.
-      const png = this.viewer.exportPng(1, transparent);
-      await navigator.clipboard.write([new ClipboardItem({ 'image/png': png })]);
-    } catch (error) {
-      this.showError('Clipboard', error);
-    }
-  }
-
-  private exportSvg(transparent: boolean): void {
-    try {
-      const svg = this.viewer.exportSvg(transparent);
-      saveBlob(new Blob([svg], { type: 'image/svg+xml' }), this.fileName('svg'));
-    } catch (error) {
-      this.showError(this.fileName('svg'), error);
-    }
-  }
-
-  private async exportMesh(format: 'off' | 'obj'): Promise<void> {
-    try {
-      const text = await this.viewer.exportMesh(format);
-      saveBlob(new Blob([text], { type: 'text/plain' }), this.fileName(format));
-    } catch (error) {
-      this.showError(this.fileName(format), error);
-    }
   }
 
   private update(state: ViewerState): void {
@@ -415,7 +395,7 @@ export class AppShell {
     });
     this.rules.element.hidden = state.scheme !== 'custom';
     this.levels.update(state);
-    this.display.update(state, this.savedView() !== null);
+    this.display.update(state, savedView() !== null);
     this.facts.update(state);
     this.exports.update(state);
     this.progress.update(state.busy);

@@ -6,6 +6,7 @@ import type { MeshFacts } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
+import type { ModelSource } from './share-actions';
 
 export interface TestError {
   source: string;
@@ -40,6 +41,10 @@ export interface SubdivLabTestState {
   customRules: RuleSet | null;
   /** quad-triangle's border option (false: "Fixed boundary" is checked). */
   smoothBoundary: boolean;
+  /** Where the shown model came from: a URL as given (sample, ?src=, link) or a local file. */
+  modelSource: ModelSource | null;
+  /** The non-blocking notice shown (e.g. ignored link values), null when hidden. */
+  notice: string | null;
 }
 
 export interface SubdivLabTestApi {
@@ -48,6 +53,8 @@ export interface SubdivLabTestApi {
   setMemoryBudget(bytes: number): void;
   /** Vertex positions of the shown level, x0 y0 z0 x1 ... (empty before a load). */
   positions(): number[];
+  /** The link Share would copy; null when there is none (a local file, no model). */
+  shareLink(): string | null;
 }
 
 declare global {

@@ -1,5 +1,6 @@
 /** Keyboard shortcuts of the app; ignored while typing in a field or while a dialog is open. */
 import type { OverlayName } from '../render/render-mode';
+import { el } from './dom';
 
 export interface ShortcutHandlers {
   subdivide: () => void;
@@ -81,4 +82,18 @@ export function installShortcuts(
   const listener = onKeyDown as EventListener;
   root.addEventListener('keydown', listener);
   return () => root.removeEventListener('keydown', listener);
+}
+
+/** The sidebar's collapsible list of the shortcuts. */
+export function shortcutsHelp(): HTMLElement {
+  return el(
+    'details',
+    { className: 'panel shortcuts', testId: 'help' },
+    el('summary', { text: 'Keyboard shortcuts' }),
+    el(
+      'dl',
+      {},
+      ...SHORTCUTS.flatMap(({ keys, action }) => [el('dt', {}, el('kbd', { text: keys })), el('dd', { text: action })]),
+    ),
+  );
 }
