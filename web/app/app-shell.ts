@@ -10,7 +10,6 @@ import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
 import { nextRenderMode } from '../render/render-mode';
-import { cameraKey } from '../ui/camera-keys';
 import { ConfirmDialog } from '../ui/confirm-dialog';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
 import { button, el } from '../ui/dom';
@@ -27,6 +26,7 @@ import { RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { SharePanel } from '../ui/share-panel';
 import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
+import { handleViewKey } from '../ui/view-keys';
 import { formatBytes } from '../viewer/memory-budget';
 import { fetchMesh, LoadError, type MeshText, readFile } from '../viewer/mesh-source';
 import { checkRulesInCore } from '../viewer/rules-check';
@@ -89,7 +89,7 @@ export class AppShell {
         'aria-label': '3D view: drag or arrow keys rotate, right-drag or Shift+arrows pan, wheel or +/− zoom',
       },
     });
-    stage.addEventListener('keydown', (event) => cameraKey(event, this.viewer.view));
+    stage.addEventListener('keydown', (event) => handleViewKey(this.viewer.view, event));
     this.emptyHint = el(
       'div',
       { testId: 'viewer.empty', className: 'empty-hint' },
