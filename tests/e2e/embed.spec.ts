@@ -298,3 +298,62 @@ test.describe('styled by the page', () => {
     expect(await corner('b')).toEqual([255, 255, 255, 255]);
   });
 });
+
+test('a lost WebGL context comes back: a viewer drawn meanwhile draws its level again by itself', async ({
+  embed,
+  page,
+}) => {
+  // Keep a handle on the page's one WebGL context (the shared renderer's) to lose it on purpose.
+  await page.addInitScript(() => {
+    const getContext = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
+      const context = (getContext as (...a: unknown[]) => RenderingContext | null).call(this, type, ...rest);
+      if (type.startsWith('webgl'))
+        (window as unknown as { __gl: WebGLRenderingContext }).__gl = context as WebGLRenderingContext;
+      return context;
+    } as typeof getContext;
+  });
+  await embed.serve(
+    'e2e/lost.html',
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Lost context</title>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+<style>subdiv-viewer{width:300px;height:220px;display:inline-block}</style></head><body>
+<subdiv-viewer id="a" src="../meshes/cube.off" levels="1" controls="none"></subdiv-viewer>
+<subdiv-viewer id="b" src="../meshes/icosahedron.off" scheme="loop" levels="1" controls="none"></subdiv-viewer>
+</body></html>`,
+  );
+  await page.goto('./e2e/lost.html');
+  await embed.waitForLevel('a', 1);
+  await embed.waitForLevel('b', 1);
+  const centre = (id: string) =>
+    page.locator(`#${id}`).evaluate((e) => {
+      const canvas = e.shadowRoot?.querySelector('canvas') as HTMLCanvasElement;
+      const context = canvas.getContext('2d') as CanvasRenderingContext2D;
+      return Array.from(context.getImageData(canvas.width >> 1, canvas.height >> 1, 1, 1).data);
+    });
+  const background = [0xf3, 0xf4, 0xf6, 255];
+  await expect.poll(() => centre('a')).not.toEqual(background);
+  const before = { a: await centre('a'), b: await centre('b') };
+  const context = (call: 'loseContext' | 'restoreContext') =>
+    page.evaluate((name) => {
+      // A lost context answers no getExtension: keep the extension from before.
+      const w = window as unknown as { __gl: WebGLRenderingContext; __lose?: WEBGL_lose_context };
+      w.__lose ??= w.__gl.getExtension('WEBGL_lose_context') as WEBGL_lose_context;
+      w.__lose[name]();
+    }, call);
+  const redraw = async (id: string) => {
+    // A render-mode round trip makes the view draw again, showing the same picture.
+    await page.locator(`#${id}`).evaluate((e) => e.setAttribute('render-mode', 'flat'));
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    await page.locator(`#${id}`).evaluate((e) => e.setAttribute('render-mode', 'smooth'));
+  };
+  await context('loseContext');
+  // Drawn while the context is lost: nothing can be drawn, the picture is empty for now.
+  await redraw('b');
+  await expect.poll(() => centre('b')).not.toEqual(before.b);
+  await context('restoreContext');
+  // b draws again by itself once the context is back; a draws when asked.
+  await redraw('a');
+  await expect.poll(() => centre('a')).toEqual(before.a);
+  await expect.poll(() => centre('b')).toEqual(before.b);
+});

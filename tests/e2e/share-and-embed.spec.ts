@@ -3,7 +3,7 @@
  * display and camera; Share copies the link, Embed… gives an element and an
  * iframe snippet; a local file cannot be linked; a first visit opens a sample.
  */
-import type { Page } from '@playwright/test';
+import type { Frame, Page } from '@playwright/test';
 import type { SubdivLabTestState } from '../../web/app/test-api';
 import { expect, test } from './fixtures';
 import { type Counts, expectedClosedCounts } from './helpers';
@@ -310,6 +310,43 @@ test('Embed… gives an element and an iframe snippet with the exact state; Copy
     });
     const n = view.split(',').map(Number);
     expectSameView({ position: [n[0], n[1], n[2]], target: [n[3], n[4], n[5]], up: [n[6], n[7], n[8]] }, state.view);
+  });
+
+  await test.step('both snippets, pasted into a page, show the same state', async () => {
+    const element = await app.byTestId('embed.element.code').inputValue();
+    const frame = await app.byTestId('embed.iframe.code').inputValue();
+    const page = await context.newPage();
+    await page.route('**/e2e/pasted.html', (route) =>
+      route.fulfill({
+        contentType: 'text/html',
+        body: `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Pasted</title></head><body>
+${element}
+${frame}
+</body></html>`,
+      }),
+    );
+    await page.goto(new URL('e2e/pasted.html', base).href);
+    const want = { ...expectedClosedCounts('loop', OCTA, 2) };
+    const read = (target: Page | Frame) =>
+      target.evaluate(() => {
+        const e = document.querySelector('subdiv-viewer') as HTMLElementTagNameMap['subdiv-viewer'];
+        const s = e.state;
+        return s && s.busy === null && s.levelCount > 0
+          ? { level: s.level, facts: s.facts, mode: s.renderMode, overlays: s.overlays, view: e.getView() }
+          : null;
+      });
+    await expect.poll(async () => (await read(page))?.level).toBe(2);
+    const shown = await read(page);
+    expect(shown?.facts).toMatchObject(want);
+    expect(shown).toMatchObject({ mode: 'edges', overlays: { control: true, curves: true, bbox: false } });
+    expectSameView(shown?.view as View, state.view);
+    const inner = page.frames().find((f) => f.url().includes('embed.html'));
+    if (!inner) throw new Error('the pasted iframe did not load embed.html');
+    await expect.poll(async () => (await read(inner))?.level).toBe(2);
+    const framed = await read(inner);
+    expect(framed?.facts).toMatchObject(want);
+    expectSameView(framed?.view as View, state.view);
+    await page.close();
   });
 
   await test.step('Copy puts the snippet on the clipboard', async () => {

@@ -51,6 +51,7 @@ export class SceneView {
   readonly camera: PerspectiveCamera;
   private readonly renderer: SharedRenderer;
   private readonly context: CanvasRenderingContext2D;
+  private readonly detach: () => void;
   /** Clear colour of the view (null: transparent). */
   private background: string | null = VIEW_COLORS.background;
   private readonly scene = new Scene();
@@ -80,6 +81,7 @@ export class SceneView {
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = sharedRenderer();
+    this.detach = this.renderer.attach(() => this.requestRender());
     this.canvas = document.createElement('canvas');
     this.canvas.classList.add('subdiv-canvas');
     // Inline, so the view fills its container inside any page or shadow root.
@@ -344,6 +346,7 @@ export class SceneView {
   /** Stops drawing and frees the renderer, materials and helpers (not the caller's LevelGraphics). */
   dispose(): void {
     cancelAnimationFrame(this.frame);
+    this.detach();
     this.resizeObserver.disconnect();
     this.visibilityObserver.disconnect();
     this.controls.dispose();

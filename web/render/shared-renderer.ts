@@ -18,13 +18,24 @@ export class SharedRenderer {
   private width = 1;
   private height = 1;
   private readonly clearColor = new Color();
+  private readonly views = new Set<() => void>();
 
   constructor() {
     this.renderer = new WebGLRenderer({ antialias: true, alpha: true });
+    // three.js rebuilds its GPU state when a lost context comes back; the views then draw again.
+    this.renderer.domElement.addEventListener('webglcontextrestored', () => {
+      for (const redraw of this.views) redraw();
+    });
     // Views work in device pixels themselves.
     this.renderer.setPixelRatio(1);
     this.renderer.setSize(this.width, this.height, false);
     this.renderer.setScissorTest(true);
+  }
+
+  /** Registers a view's redraw request, called when a lost WebGL context is restored; returns the unregister function. */
+  attach(redraw: () => void): () => void {
+    this.views.add(redraw);
+    return () => this.views.delete(redraw);
   }
 
   /** Largest picture side the GPU can draw. */
