@@ -4,6 +4,8 @@
  * iframe. Counts are checked against the schemes' refinement rules
  * (helpers.ts), never against the app's own code.
  */
+import { createServer } from 'node:http';
+import type { AddressInfo } from 'node:net';
 import { expect, test } from './fixtures';
 import { expectedClosedCounts } from './helpers';
 
@@ -147,9 +149,17 @@ test.describe('a page with twelve viewers and an iframe', () => {
       await expect.poll(async () => (await page.locator('#v0').screenshot()).equals(pixels)).toBe(false);
     });
 
-    await test.step('levels="3" recomputes to level 3', async () => {
+    await test.step('levels="3" recomputes to level 3, with progress events around each step', async () => {
+      const progressBefore = (await embed.events('progress', 'v0')).length;
       await page.locator('#v0').evaluate((e) => e.setAttribute('levels', '3'));
       const reading = await embed.waitForLevel('v0', 3);
+      const progress = (await embed.events('progress', 'v0')).slice(progressBefore).map((e) => e.detail);
+      expect(progress).toEqual([
+        { busy: true, kind: 'subdivide', label: 'Subdividing to level 2…' },
+        { busy: false, kind: null, label: '' },
+        { busy: true, kind: 'subdivide', label: 'Subdividing to level 3…' },
+        { busy: false, kind: null, label: '' },
+      ]);
       expect(reading.facts).toMatchObject({ ...expectedClosedCounts('catmull-clark', MESHES.cube, 3) });
       expect((await embed.lastLevelChange('v0'))?.detail).toMatchObject({ level: 3 });
     });
@@ -356,4 +366,35 @@ test('a lost WebGL context comes back: a viewer drawn meanwhile draws its level 
   await redraw('a');
   await expect.poll(() => centre('a')).toEqual(before.a);
   await expect.poll(() => centre('b')).toEqual(before.b);
+});
+
+test('a page on another origin uses the hosted element: module, worker (through a blob: shim) and .wasm load across origins', async ({
+  embed,
+  page,
+  baseURL,
+}) => {
+  const host = new URL(baseURL ?? 'http://127.0.0.1:4179/').origin;
+  // A course page served by a second server on this machine: another origin to the browser.
+  const lesson = `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Lesson</title>
+<script type="module" src="${host}/embed/subdiv-viewer.js"></script></head><body>
+<subdiv-viewer id="x" src="${host}/meshes/tetrahedron.off" scheme="loop" levels="2" style="width:320px;height:240px"></subdiv-viewer>
+</body></html>`;
+  const server = createServer((_request, response) => {
+    response.writeHead(200, { 'content-type': 'text/html; charset=utf-8' });
+    response.end(lesson);
+  });
+  await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+  try {
+    const origin = `http://127.0.0.1:${(server.address() as AddressInfo).port}`;
+    expect(origin).not.toBe(host);
+    const workers: string[] = [];
+    page.on('worker', (worker) => workers.push(worker.url()));
+    await page.goto(`${origin}/course/lesson.html`);
+    const reading = await embed.waitForLevel('x', 2);
+    expect(reading.facts).toMatchObject({ ...expectedClosedCounts('loop', MESHES.tetrahedron, 2) });
+    expect(workers).toHaveLength(1);
+    expect(workers[0]).toMatch(new RegExp(`^blob:${origin}/`));
+  } finally {
+    await new Promise<void>((resolve) => server.close(() => resolve()));
+  }
 });

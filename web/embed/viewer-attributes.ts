@@ -47,6 +47,18 @@ export class ViewerAttributes extends HTMLElement {
   set controlEdges(on: boolean) {
     this.setFlag('control-edges', on);
   }
+  get bbox(): boolean {
+    return this.readState().overlays.bbox;
+  }
+  set bbox(on: boolean) {
+    this.setFlag('bbox', on);
+  }
+  get triangulate(): boolean {
+    return this.readState().triangulate;
+  }
+  set triangulate(on: boolean) {
+    this.setFlag('triangulate', on);
+  }
   get rules(): string {
     return this.getAttribute('rules') ?? '';
   }
