@@ -7,7 +7,7 @@
 import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { expect, test } from './fixtures';
-import { expectedClosedCounts } from './helpers';
+import { expectedClosedCounts, triangulatedQuads } from './helpers';
 
 const OCTAHEDRON = { vertices: 6, edges: 12, faces: 8 };
 
@@ -397,4 +397,145 @@ test('a page on another origin uses the hosted element: module, worker (through 
   } finally {
     await new Promise<void>((resolve) => server.close(() => resolve()));
   }
+});
+
+test.describe('what pages do to an element', () => {
+  test.use({ allowedConsoleErrors: [] });
+
+  test('properties set before the module loads, a level the scheme cannot reach yet, the top level, setView', async ({
+    embed,
+    page,
+  }) => {
+    await embed.serve(
+      'e2e/early.html',
+      `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Early</title></head><body>
+<subdiv-viewer id="p" src="../meshes/cube.off" style="width:320px;height:220px"></subdiv-viewer>
+<subdiv-viewer id="q" src="../meshes/cube.off" scheme="loop" levels="2" style="width:320px;height:220px"></subdiv-viewer>
+<subdiv-viewer id="r" src="../meshes/tetrahedron.off" scheme="linear-tri" levels="7" style="width:320px;height:220px"></subdiv-viewer>
+<script>
+  // A classic script before the module: plain properties on a not-yet-defined element.
+  const p = document.getElementById('p');
+  p.levels = 2;
+  p.renderMode = 'edges';
+</script>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+</body></html>`,
+    );
+    await page.goto('./e2e/early.html');
+    await test.step('properties set early apply once the element is defined', async () => {
+      const p = await embed.waitForLevel('p', 2);
+      expect(p.facts).toMatchObject({ ...expectedClosedCounts('catmull-clark', MESHES.cube, 2) });
+      expect(await page.locator('#p').evaluate((e) => e.getAttribute('render-mode'))).toBe('edges');
+    });
+    await test.step('a level Loop cannot reach on quads keeps levels="2"; triangulate then reaches it', async () => {
+      await expect.poll(async () => (await embed.events('error', 'q')).length).toBe(1);
+      expect((await embed.events('error', 'q'))[0].detail).toMatchObject({ code: 'not_triangles' });
+      const q = await embed.reading('q');
+      expect(q).toMatchObject({ level: 0, levelsAttribute: '2' });
+      await expect(page.locator('#q').locator('.message')).toBeVisible();
+      await page.locator('#q').evaluate((e) => {
+        (e as HTMLElementTagNameMap['subdiv-viewer']).triangulate = true;
+      });
+      const reached = await embed.waitForLevel('q', 2);
+      expect(reached.facts).toMatchObject({ ...expectedClosedCounts('loop', triangulatedQuads(MESHES.cube), 2) });
+      await expect(page.locator('#q').locator('.message')).toBeHidden();
+      expect(await embed.events('error', 'q')).toHaveLength(1);
+    });
+    await test.step('level 8 is the top: + is off there and subdivide() stays', async () => {
+      await embed.waitForLevel('r', 7);
+      expect(await page.locator('#r').evaluate((e) => (e as HTMLElementTagNameMap['subdiv-viewer']).subdivide())).toBe(
+        8,
+      );
+      await expect(page.locator('#r').locator('[part="level-up"]')).toBeDisabled();
+      expect(await page.locator('#r').evaluate((e) => (e as HTMLElementTagNameMap['subdiv-viewer']).subdivide())).toBe(
+        8,
+      );
+      expect(await page.locator('#r').evaluate((e) => (e as HTMLElementTagNameMap['subdiv-viewer']).setLevel(20))).toBe(
+        8,
+      );
+      expect((await embed.reading('r')).facts?.faces).toBe(4 * 4 ** 8);
+      expect(await embed.events('error', 'r')).toEqual([]);
+    });
+    await test.step('setView takes the view string and refuses what no camera can take', async () => {
+      const view = await page.locator('#p').evaluate((e) => {
+        const v = e as HTMLElementTagNameMap['subdiv-viewer'];
+        v.setView('0,0,6,0,0,0,0,1,0');
+        return v.getView();
+      });
+      expect(view).toEqual({ position: [0, 0, 6], target: [0, 0, 0], up: [0, 1, 0] });
+      const refused = await page.locator('#p').evaluate((e) => {
+        const v = e as HTMLElementTagNameMap['subdiv-viewer'];
+        const errors: string[] = [];
+        for (const bad of ['1,2', { position: [0, 0, 0], target: [0, 0, 0], up: [0, 1, 0] }]) {
+          try {
+            v.setView(bad as string);
+          } catch (error) {
+            errors.push((error as Error).name);
+          }
+        }
+        return errors;
+      });
+      expect(refused).toEqual(['TypeError', 'TypeError']);
+    });
+  });
+
+  test('a lower level stops the running step; load() wins over a src still downloading; removal stops the pass', async ({
+    embed,
+    page,
+  }) => {
+    const CUBE =
+      'OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n4 3 2 1 0\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n';
+    const TETRA = 'OFF\n4 4 0\n1 1 1\n-1 -1 1\n-1 1 -1\n1 -1 -1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n';
+    await page.route('**/slow/*.off', async (route) => {
+      await new Promise((r) => setTimeout(r, 1500));
+      await route.fulfill({ body: CUBE, contentType: 'text/plain' });
+    });
+    await embed.serve(
+      'e2e/races.html',
+      `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Races</title>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+<style>subdiv-viewer{width:320px;height:220px;display:inline-block}</style></head><body>
+<subdiv-viewer id="big" src="../meshes/cgal/bunny00.off" scheme="loop"></subdiv-viewer>
+<subdiv-viewer id="slow"></subdiv-viewer>
+<subdiv-viewer id="gone" levels="2"></subdiv-viewer>
+</body></html>`,
+    );
+    await page.goto('./e2e/races.html');
+    await test.step('levels back to 0 during the first Loop step of the bunny stops it', async () => {
+      await embed.waitForLevel('big', 0);
+      const result = await page.locator('#big').evaluate(async (e) => {
+        const v = e as HTMLElementTagNameMap['subdiv-viewer'];
+        const started = performance.now();
+        const done = v.setLevel(2);
+        await new Promise((r) => setTimeout(r, 50));
+        v.levels = 0;
+        const level = await done;
+        return { level, ms: performance.now() - started };
+      });
+      expect(result.level).toBe(0);
+      const levels = (await embed.events('level-change', 'big')).map((e) => e.detail.level);
+      expect(levels).toEqual([0]);
+      expect(await embed.events('error', 'big')).toEqual([]);
+    });
+    await test.step('load() while src is still downloading: the loaded text stays', async () => {
+      await page.locator('#slow').evaluate(async (e, text) => {
+        const v = e as HTMLElementTagNameMap['subdiv-viewer'];
+        v.src = '../slow/cube.off';
+        await v.load(text, 'tetra.off');
+      }, TETRA);
+      await page.waitForTimeout(2000);
+      expect((await embed.reading('slow')).facts).toMatchObject(MESHES.tetrahedron);
+      expect((await embed.events('load', 'slow')).map((e) => e.detail.modelName)).toEqual(['tetra.off']);
+    });
+    await test.step('an element removed while its src downloads does nothing more', async () => {
+      await page.locator('#gone').evaluate(async (e) => {
+        e.setAttribute('src', '../slow/other.off');
+        await new Promise((r) => setTimeout(r, 200));
+        e.remove();
+      });
+      await page.waitForTimeout(2000);
+      expect(await embed.events('load', 'gone')).toEqual([]);
+      expect(await embed.events('level-change', 'gone')).toEqual([]);
+    });
+  });
 });

@@ -42,7 +42,7 @@ describe('view strings', () => {
 describe('viewer parameters', () => {
   it('read every key of a share link', () => {
     const { params, problems } = parseViewerParams(
-      '#src=meshes%2Ftorus.off&scheme=loop&levels=2&mode=edges&control-mesh=1&control-edges=0&bbox=true&view=1,2,3,0,0,0,0,1,0&controls=minimal&rules=rules%2Floop.json',
+      '#src=meshes%2Ftorus.off&scheme=loop&levels=2&mode=edges&control-mesh=1&control-edges=0&bbox=true&view=1,2,3,0,0,0,0,1,0&controls=minimal&rules=rules%2Floop.json&triangulate=1',
     );
     expect(problems).toEqual([]);
     expect(params).toEqual({
@@ -51,6 +51,7 @@ describe('viewer parameters', () => {
       levels: 2,
       renderMode: 'edges',
       overlays: { control: true, curves: false, bbox: true },
+      triangulate: true,
       view: { position: [1, 2, 3], target: [0, 0, 0], up: [0, 1, 0] },
       controls: 'minimal',
       rules: 'rules/loop.json',
@@ -81,6 +82,7 @@ describe('viewer parameters', () => {
       levels: 3,
       renderMode: 'wireframe' as const,
       overlays: { control: true, curves: true, bbox: false },
+      triangulate: true,
       view: {
         position: [0.5, 4, -2] as [number, number, number],
         target: [0, 0, 0] as [number, number, number],
@@ -90,7 +92,7 @@ describe('viewer parameters', () => {
     };
     const text = formatViewerParams(params).toString();
     expect(text).toBe(
-      'src=https%3A%2F%2Fexample.org%2Fa+b.off&scheme=doo-sabin&levels=3&mode=wireframe&control-mesh=1&bbox=0&control-edges=1&view=0.5%2C4%2C-2%2C0%2C0%2C0%2C0%2C0%2C1&controls=none',
+      'src=https%3A%2F%2Fexample.org%2Fa+b.off&scheme=doo-sabin&levels=3&mode=wireframe&control-mesh=1&bbox=0&control-edges=1&triangulate=1&view=0.5%2C4%2C-2%2C0%2C0%2C0%2C0%2C0%2C1&controls=none',
     );
     expect(parseViewerParams(text)).toEqual({ params, problems: [] });
   });

@@ -78,6 +78,7 @@ export function elementSnippet(params: ViewerParams, subject: EmbedSubject): str
   for (const [name, key] of Object.entries(OVERLAY_KEYS) as [keyof typeof OVERLAY_KEYS, string][]) {
     if (p.overlays?.[name]) add(key);
   }
+  if (p.triangulate) add('triangulate');
   if (p.view) add('view', formatViewString(p.view));
   add('controls', 'minimal');
   add('alt', describeView(p, subject));

@@ -56,6 +56,7 @@ export function paramsOfState(state: ViewerState, src: string | null, view: View
   const params: ViewerParams = { scheme: state.scheme };
   if (src) params.src = src;
   if (state.levelCount > 0) params.levels = state.level;
+  if (state.triangulate) params.triangulate = true;
   params.renderMode = state.renderMode;
   for (const name of OVERLAY_NAMES) {
     if (state.overlays[name]) params.overlays = { ...params.overlays, [name]: true };
@@ -185,6 +186,7 @@ export class UrlState {
       }
       const scheme = params.scheme ?? DEFAULT_SCHEME;
       if (viewer.state.scheme !== scheme) host.setScheme(scheme);
+      if (params.triangulate !== undefined) viewer.setTriangulate(params.triangulate);
       if (haveModel) await this.stepTo(params.levels ?? 0, stale);
       if (stale()) return;
       viewer.setRenderMode(params.renderMode ?? DEFAULT_RENDER_MODE);

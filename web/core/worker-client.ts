@@ -189,7 +189,12 @@ export class WorkerClient {
       if (this.running !== request) return;
     }
     const message: WorkerRequestMessage = { id: request.id, kind: request.kind, args: args as never };
-    this.ensureWorker().postMessage(message);
+    try {
+      this.ensureWorker().postMessage(message);
+    } catch (error) {
+      // A worker the page may not start (a Content-Security-Policy), or arguments that cannot be sent.
+      this.settle(request, { id: request.id, ok: false, error: errorData(error) });
+    }
   }
 
   private ensureWorker(): Worker {

@@ -10,7 +10,7 @@ import { el } from '../ui/dom';
 import { faceTypes } from '../ui/facts-panel';
 import { SCHEME_NAMES, schemeInfo } from '../viewer/scheme-info';
 import type { ViewerState } from '../viewer/subdiv-viewer';
-import type { ControlsMode } from '../viewer/viewer-params';
+import { type ControlsMode, MAX_PARAM_LEVELS } from '../viewer/viewer-params';
 
 export interface EmbedControlHandlers {
   stepLevel: (delta: number) => void;
@@ -61,8 +61,8 @@ export class EmbedControls {
     this.facts = withPart(el('span', { className: 'facts' }), 'facts');
     this.fullOnly = [
       this.mode,
-      withPart(el('label', {}, this.control, 'Control mesh'), 'control-mesh'),
-      withPart(el('label', {}, this.curves, 'Control edges'), 'control-edges'),
+      withPart(el('label', { attrs: { title: 'Control mesh' } }, this.control, 'Control mesh'), 'control-mesh'),
+      withPart(el('label', { attrs: { title: 'Control edges' } }, this.curves, 'Control edges'), 'control-edges'),
       fit,
       this.facts,
     ];
@@ -81,8 +81,9 @@ export class EmbedControls {
   update(state: ViewerState): void {
     const loaded = state.levelCount > 0;
     const busy = state.busy !== null;
+    // Going down stays possible during a step (it stops the step); up waits, and ends at the last level a page may ask.
     this.down.disabled = !loaded || state.level === 0;
-    this.up.disabled = !loaded || busy;
+    this.up.disabled = !loaded || busy || state.level >= MAX_PARAM_LEVELS;
     this.level.textContent = loaded ? `Level ${state.level}` : '–';
     if (this.scheme.value !== state.scheme) {
       if (![...this.scheme.options].some((o) => o.value === state.scheme)) {

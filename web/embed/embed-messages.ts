@@ -10,7 +10,7 @@
  * Events: `ready`, `load`, `level-change`, `error`, `progress`.
  */
 import type { SchemeName } from '../core/mesh';
-import { parseViewState, parseViewString, type ViewState } from '../render/view-state';
+import { checkedView, parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
 import { MAX_PARAM_LEVELS } from '../viewer/viewer-params';
 
@@ -65,12 +65,7 @@ export function checkCommand(data: unknown): Checked {
       }
       return { ok: false, reason: 'set-level needs level, a whole number ≥ 0' };
     case 'set-view': {
-      const view =
-        typeof data.view === 'string'
-          ? parseViewString(data.view)
-          : isRecord(data.view)
-            ? parseViewState(JSON.stringify(data.view))
-            : null;
+      const view = typeof data.view === 'string' ? parseViewString(data.view) : checkedView(data.view);
       if (view) return { ok: true, command: { subdivlab: 'set-view', view } };
       return { ok: false, reason: 'set-view needs view: nine numbers, or { position, target, up }' };
     }

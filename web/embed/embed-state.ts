@@ -79,6 +79,14 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
         message: `controls must be none, minimal or full, not "${controlsText}".`,
       });
   }
+  const backgroundText = attr('background')?.trim() || null;
+  const background = backgroundText !== null && isColour(backgroundText) ? backgroundText : null;
+  if (backgroundText !== null && background === null) {
+    problems.push({
+      attribute: 'background',
+      message: `background must be a CSS colour or transparent, not "${backgroundText}".`,
+    });
+  }
   return {
     src: attr('src')?.trim() ?? '',
     scheme,
@@ -90,7 +98,13 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     view,
     controls,
     alt: attr('alt') ?? '',
-    background: attr('background')?.trim() || null,
+    background,
     problems,
   };
+}
+
+/** A CSS colour the browser understands, or `transparent` (outside a browser, any word passes). */
+function isColour(value: string): boolean {
+  if (value === 'transparent') return true;
+  return typeof CSS === 'undefined' || CSS.supports('color', value);
 }

@@ -15,8 +15,10 @@ export const EMBED_CSS = `
   contain: content;
 }
 :host([hidden]), [hidden] { display: none !important; }
+/* With a background of the page's choosing, the picture paints it (transparent shows the page). */
+:host([background]) { background: transparent; }
 :host(:focus-visible) { outline: 3px solid #2563eb; outline-offset: 2px; }
-.frame { position: absolute; inset: 0; display: flex; flex-direction: column; }
+.frame { position: absolute; inset: 0; display: flex; flex-direction: column; container-type: inline-size; }
 .stage { position: relative; flex: 1 1 auto; min-height: 0; }
 .stage:focus-visible { outline: 3px solid #2563eb; outline-offset: -3px; }
 .bar {
@@ -46,6 +48,12 @@ export const EMBED_CSS = `
 }
 .placeholder {
   position: absolute; inset: 0; display: grid; place-items: center; color: #52606d; pointer-events: none;
+}
+/* Narrow viewers keep one row of controls: the counts and labels give way first. */
+@container (max-width: 440px) {
+  .facts { display: none; }
+  .bar label { font-size: 0; gap: 0; }
+  .bar select { max-width: 8.5em; }
 }
 @media (prefers-color-scheme: dark) {
   :host { color: #e4e7eb; background: #1f2328; }

@@ -21,10 +21,11 @@ if (params.renderMode) viewer.setAttribute('render-mode', params.renderMode);
 for (const [name, on] of Object.entries(params.overlays ?? {})) {
   if (on) viewer.setAttribute(OVERLAY_KEYS[name as keyof typeof OVERLAY_KEYS], '');
 }
+if (params.triangulate) viewer.setAttribute('triangulate', '');
 if (params.view) viewer.setAttribute('view', formatViewString(params.view));
 if (params.rules) viewer.setAttribute('rules', params.rules);
 viewer.setAttribute('controls', params.controls ?? 'minimal');
-for (const key of ['alt', 'background', 'triangulate']) {
+for (const key of ['alt', 'background']) {
   const value = query.get(key);
   if (value !== null) viewer.setAttribute(key, value);
 }

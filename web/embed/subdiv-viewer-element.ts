@@ -8,17 +8,20 @@
  * viewport and gives its GPU memory back when it is far from it.
  */
 import type { MeshFacts, SchemeName } from '../core/mesh';
+import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
 import { nextRenderMode, type OverlayName } from '../render/render-mode';
-import type { ViewState } from '../render/view-state';
+import { checkedView, parseViewString, type ViewState } from '../render/view-state';
 import { el } from '../ui/dom';
 import { faceTypes } from '../ui/facts-panel';
 import { installShortcuts } from '../ui/shortcuts';
 import { handleViewKey } from '../ui/view-keys';
+import { formatBytes } from '../viewer/memory-budget';
 import { fetchMesh, meshText, readFile } from '../viewer/mesh-source';
 import { fetchRuleSet } from '../viewer/rules-source';
 import { schemeInfo } from '../viewer/scheme-info';
 import { SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
+import { MAX_PARAM_LEVELS } from '../viewer/viewer-params';
 import { EmbedControls } from './embed-controls';
 import {
   AttributeError,
@@ -27,6 +30,7 @@ import {
   type LoadDetail,
   type ProgressDetail,
 } from './embed-events';
+import type { EmbedState } from './embed-state';
 import { EMBED_CSS } from './embed-styles';
 import { ViewerAttributes } from './viewer-attributes';
 
@@ -79,10 +83,18 @@ export class SubdivViewerElement extends ViewerAttributes {
   /** The src whose model is shown (or whose load failed: not retried until the attribute changes). */
   private loadedSrc: string | null = null;
   private loadedRules = '';
+  /** Bumped by load(): a src download that finishes later is dropped. */
+  private modelEpoch = 0;
   private syncing: Promise<void> | null = null;
   private syncAgain = false;
-  /** Set while the element writes its own attributes (the level it shows), so they do not trigger a sync. */
-  private reflecting = false;
+  /** What the running pass aims at (null between passes). */
+  private passTarget: EmbedState | null = null;
+  /** cancel() during the running pass: it computes no further level. */
+  private passCancelled = false;
+  /** Failures reported during the running pass: a pass without any clears the message. */
+  private passFailures = 0;
+  /** Attribute problems already reported (an attribute's problem is reported once, not on every pass). */
+  private reportedProblems = new Set<string>();
   private last: { level: number; facts: MeshFacts | null; busy: boolean; scheme: SchemeName } | null = null;
   private gpuReleasedFlag = false;
 
@@ -98,7 +110,7 @@ export class SubdivViewerElement extends ViewerAttributes {
     this.status = el('div', { className: 'status', attrs: { role: 'status', 'aria-live': 'polite' } });
     this.busyLabel = el('span');
     const cancel = el('button', { text: 'Cancel', attrs: { type: 'button', part: 'cancel' } });
-    cancel.addEventListener('click', () => this.viewer?.cancel());
+    cancel.addEventListener('click', () => this.cancel());
     this.busyBox = el('div', { className: 'busy', attrs: { part: 'progress' } }, this.busyLabel, cancel);
     this.busyBox.hidden = true;
     this.stage.append(this.placeholder, this.message, this.busyBox, this.status);
@@ -119,6 +131,7 @@ export class SubdivViewerElement extends ViewerAttributes {
   }
 
   connectedCallback(): void {
+    this.upgradeProperties();
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     this.applyDisplay();
     if (this.viewer) return;
@@ -144,13 +157,22 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.loadedSrc = null;
       this.loadedRules = '';
       this.last = null;
+      this.gpuReleasedFlag = false;
+      this.reportedProblems.clear();
     });
   }
 
   attributeChangedCallback(name: string, oldValue: string | null, value: string | null): void {
-    if (oldValue === value || this.reflecting) return;
-    if (DISPLAY_ATTRIBUTES.has(name)) this.applyDisplay(name === 'view');
-    else void this.sync();
+    if (oldValue === value) return;
+    if (DISPLAY_ATTRIBUTES.has(name)) {
+      this.applyDisplay(name === 'view');
+      return;
+    }
+    // A change that makes the running step useless stops it; the levels computed so far stay.
+    const running = this.passTarget;
+    const stepping = this.viewer?.state.busy?.kind === 'subdivide';
+    if (running && stepping && (name !== 'levels' || this.readState().levels < running.levels)) this.viewer?.cancel();
+    void this.sync();
   }
 
   /** The shown level (−1 before a model is loaded). */
@@ -176,34 +198,47 @@ export class SubdivViewerElement extends ViewerAttributes {
 
   // --- Methods ------------------------------------------------------------------------------
 
-  /** Computes one more level and shows it; resolves with the level shown. */
+  /** Computes one more level and shows it (up to level 8); resolves with the level shown. */
   async subdivide(): Promise<number> {
-    return this.setLevel(this.levelCountOrZero());
+    const level = this.level;
+    return level < 0 ? level : this.setLevel(level + 1);
   }
 
-  /** Shows level `n`, computing the levels up to it as needed; resolves with the level shown. */
+  /**
+   * Shows level `n` (0–8), computing the levels up to it as needed; resolves
+   * with the level shown, lower than `n` when a step failed or was cancelled.
+   */
   async setLevel(n: number): Promise<number> {
-    // Setting the attribute starts the pass (when it changed); wait for that one, not another after it.
-    this.levels = Math.max(0, Math.round(n));
+    this.levels = Math.max(0, Math.min(MAX_PARAM_LEVELS, Math.round(n)));
+    // The attribute's change started a pass if it changed; otherwise start one (a level that failed before).
     await (this.syncing ?? this.sync());
     return this.level;
   }
 
-  /** Shows a mesh from a File, or from OFF/OBJ text named `name`; the `src` attribute no longer applies. */
+  /** Shows a mesh from a File, or from OFF/OBJ text named `name`, in place of `src`'s. */
   async load(input: File | string, name = 'mesh.off'): Promise<void> {
     const viewer = this.start();
     const fileName = input instanceof File ? input.name : name;
+    // A src download still running is dropped when it arrives.
+    this.modelEpoch++;
+    this.loadedSrc = this.src;
     try {
       const mesh = input instanceof File ? await readFile(input) : meshText(name, input);
       await viewer.loadText(mesh.text, mesh.format, mesh.name);
-      this.loadedSrc = this.src;
       this.hideMessage();
       this.dispatch('load', { modelName: mesh.name, facts: viewer.state.facts } as LoadDetail);
-      await this.sync();
     } catch (error) {
       this.fail(fileName, error);
       throw error;
     }
+    await this.sync();
+  }
+
+  /** Loads `src` again (after load(), or when the file behind the URL changed). */
+  reload(): Promise<void> {
+    this.loadedSrc = null;
+    this.start();
+    return this.sync();
   }
 
   /** PNG of the view at `scale` × its size. */
@@ -220,12 +255,18 @@ export class SubdivViewerElement extends ViewerAttributes {
     return this.viewer?.getView() ?? null;
   }
 
-  setView(view: ViewState): void {
-    this.start().setView(view);
+  /** Sets the camera: a ViewState, or the nine-number string of the `view` attribute. */
+  setView(view: ViewState | string): void {
+    const checked = typeof view === 'string' ? parseViewString(view) : checkedView(view);
+    if (!checked) {
+      throw new TypeError('setView needs { position, target, up } (finite, the eye off the target) or nine numbers.');
+    }
+    this.start().setView(checked);
   }
 
-  /** Stops this viewer's running step (other viewers' work goes on). */
+  /** Stops this viewer's running step and the steps it was to run next (other viewers' work goes on). */
   cancel(): void {
+    if (this.passTarget) this.passCancelled = true;
     this.viewer?.cancel();
   }
 
@@ -236,9 +277,22 @@ export class SubdivViewerElement extends ViewerAttributes {
     this.startObserver?.disconnect();
     this.startObserver = null;
     const initial = this.readState();
-    const viewer = new SubdivViewer(this.stage, { scheme: initial.scheme, renderMode: initial.renderMode });
+    const viewer = new SubdivViewer(this.stage, {
+      scheme: initial.scheme,
+      renderMode: initial.renderMode,
+      // No dialog in a page: a step over the budget is refused, and says so.
+      confirmLargeStep: async (info) => {
+        const faces = info.prediction.faces.toLocaleString('en');
+        const message =
+          `Level ${info.level} would have ${faces} faces and need about ${formatBytes(info.estimatedBytes)}; ` +
+          `this page should not use more than ${formatBytes(info.budgetBytes)}.`;
+        this.fail(viewer.state.modelName ?? 'mesh', new SubdivError('too_large', message));
+        return false;
+      },
+    });
     this.viewer = viewer;
     viewer.onChange((state) => this.onState(state));
+    this.controlBar.update(viewer.state);
     this.releaseObserver = new IntersectionObserver(
       (entries) => {
         const near = entries.some((e) => e.isIntersecting);
@@ -258,15 +312,11 @@ export class SubdivViewerElement extends ViewerAttributes {
     return viewer;
   }
 
-  private levelCountOrZero(): number {
-    const state = this.viewer?.state;
-    return state && state.levelCount > 0 ? state.level + 1 : 0;
-  }
-
   private async stepLevel(delta: number): Promise<void> {
     const level = this.level;
-    if (level < 0) return;
-    await this.setLevel(level + delta);
+    const next = level + delta;
+    if (level < 0 || next < 0 || next > MAX_PARAM_LEVELS) return;
+    await this.setLevel(next);
   }
 
   /**
@@ -296,60 +346,85 @@ export class SubdivViewerElement extends ViewerAttributes {
     const viewer = this.viewer;
     if (!viewer) return;
     const want = this.readState();
-    for (const problem of want.problems) this.fail(problem.attribute, new AttributeError(problem.message));
+    this.passTarget = want;
+    this.passFailures = 0;
+    this.passCancelled = false;
+    try {
+      if (await this.syncModel(viewer, want)) await this.syncLevels(viewer, want);
+    } finally {
+      this.passTarget = null;
+    }
+    const attributeProblems = this.readState().problems.length;
+    if (this.viewer === viewer && this.passFailures === 0 && attributeProblems === 0 && !this.syncAgain) {
+      this.hideMessage();
+    }
+  }
+
+  /** Model and rules as the attributes ask; false when the pass cannot go on (failed, superseded, removed). */
+  private async syncModel(viewer: SubdivViewer, want: EmbedState): Promise<boolean> {
+    this.reportProblems(want.problems);
+    const alive = () => this.viewer === viewer;
     if (want.src && want.src !== this.loadedSrc) {
       this.loadedSrc = want.src;
+      const epoch = this.modelEpoch;
       try {
         const mesh = await fetchMesh(want.src, document.baseURI);
+        // Superseded while downloading: by load(), a new src, or the element's removal.
+        if (!alive() || epoch !== this.modelEpoch || this.readState().src !== want.src) return false;
         await viewer.loadText(mesh.text, mesh.format, mesh.name);
-        this.hideMessage();
+        if (!alive()) return false;
         this.placeholder.hidden = true;
         this.applyDisplay(true);
         this.dispatch('load', { modelName: mesh.name, facts: viewer.state.facts } as LoadDetail);
       } catch (error) {
-        this.fail(want.src, error);
-        return;
+        // Cancelled (Esc while loading): the src is still to be loaded, unless load() replaced it.
+        if (error instanceof CancelledError && epoch === this.modelEpoch) this.loadedSrc = null;
+        if (alive()) this.fail(want.src, error);
+        return false;
       }
     }
     if (want.rules !== this.loadedRules) {
       this.loadedRules = want.rules;
-      if (want.rules) {
-        try {
-          viewer.setSchemeOptions({ rules: await fetchRuleSet(want.rules, document.baseURI) });
-        } catch (error) {
-          this.fail(want.rules, error);
-          return;
-        }
-      } else {
-        viewer.setSchemeOptions({});
+      try {
+        viewer.setSchemeOptions(want.rules ? { rules: await fetchRuleSet(want.rules, document.baseURI) } : {});
+      } catch (error) {
+        if (alive()) this.fail(want.rules, error);
+        return false;
       }
+      if (!alive()) return false;
     }
     if (want.scheme === 'custom' && !want.rules) {
       this.fail('scheme', new AttributeError('scheme="custom" needs a rules attribute: the URL of a rule-set JSON.'));
-      return;
+      return false;
     }
     if (viewer.state.triangulate !== want.triangulate) viewer.setTriangulate(want.triangulate);
     viewer.setScheme(want.scheme);
-    if (viewer.state.levelCount === 0) return;
+    return viewer.state.levelCount > 0;
+  }
+
+  /** Computes the levels up to the one asked and shows it (or the highest reached). */
+  private async syncLevels(viewer: SubdivViewer, want: EmbedState): Promise<void> {
     try {
-      while (viewer.state.levelCount - 1 < want.levels) {
-        if (!(await viewer.subdivide())) break;
+      while (viewer.state.levelCount - 1 < want.levels && !this.syncAgain && !this.passCancelled) {
+        const stepped = await viewer.subdivide();
+        if (this.viewer !== viewer) return;
+        if (!stepped) break;
       }
     } catch (error) {
+      if (this.viewer !== viewer) return;
       this.fail(viewer.state.modelName ?? 'mesh', error);
     }
     viewer.setLevel(want.levels);
-    this.reflectLevel();
   }
 
-  /** Writes the shown level back to `levels` (it is what the element shows now). */
-  private reflectLevel(): void {
-    const level = this.level;
-    if (level < 0 || String(level) === this.getAttribute('levels')) return;
-    if (this.syncAgain) return;
-    this.reflecting = true;
-    this.setAttribute('levels', String(level));
-    this.reflecting = false;
+  /** Reports each attribute problem once (until the attribute changes), as an `error` event and the message. */
+  private reportProblems(problems: EmbedState['problems']): void {
+    const now = new Set(problems.map((p) => `${p.attribute}\n${p.message}`));
+    for (const problem of problems) {
+      const key = `${problem.attribute}\n${problem.message}`;
+      if (!this.reportedProblems.has(key)) this.fail(problem.attribute, new AttributeError(problem.message));
+    }
+    this.reportedProblems = now;
   }
 
   /** Applies what changes nothing in the levels: display, overlays, camera, controls, labels, colours. */
@@ -360,6 +435,8 @@ export class SubdivViewerElement extends ViewerAttributes {
     const label = want.alt || this.describe();
     this.stage.setAttribute('aria-label', label);
     if (!viewer) return;
+    this.reportProblems(want.problems);
+    if (!want.src && viewer.state.levelCount === 0) this.placeholder.textContent = 'No model: set the src attribute.';
     if (viewer.state.renderMode !== want.renderMode) viewer.setRenderMode(want.renderMode);
     for (const name of ['control', 'curves', 'bbox'] as OverlayName[]) {
       if (viewer.state.overlays[name] !== want.overlays[name]) viewer.setOverlay(name, want.overlays[name]);
@@ -393,7 +470,8 @@ export class SubdivViewerElement extends ViewerAttributes {
         label: state.busy?.label ?? '',
       } as ProgressDetail);
     }
-    if (state.facts && (!prev || prev.level !== state.level || prev.facts !== state.facts)) {
+    const changed = !prev || prev.level !== state.level || prev.facts !== state.facts || prev.scheme !== state.scheme;
+    if (state.facts && changed) {
       this.status.textContent = `Level ${state.level}: ${faceTypes(state.facts)}, genus ${state.facts.genus}`;
       this.dispatch('level-change', {
         level: state.level,
@@ -422,7 +500,7 @@ export class SubdivViewerElement extends ViewerAttributes {
         },
         toggleOverlay: (name) => this.setFlag(toggles[name], !this.readState().overlays[name]),
         fit: () => this.viewer?.fitView(),
-        cancel: () => this.viewer?.cancel(),
+        cancel: () => this.cancel(),
         copyImage: () => void this.copyImage(),
       },
       () => !this.viewer,
@@ -440,6 +518,7 @@ export class SubdivViewerElement extends ViewerAttributes {
 
   private fail(source: string, error: unknown): void {
     if (error instanceof CancelledError) return;
+    this.passFailures++;
     const detail = errorDetail(source, error);
     const { line, message } = detail;
     this.message.textContent = `${detail.source}: ${line > 0 && !/\bline \d/.test(message) ? `line ${line}: ` : ''}${message}`;

@@ -9,6 +9,23 @@ import type { RenderMode } from '../render/render-mode';
 import type { ControlsMode } from '../viewer/viewer-params';
 import { type EmbedState, readEmbedState } from './embed-state';
 
+/** The reflected properties, for {@link ViewerAttributes.upgradeProperties}. */
+const PROPERTY_NAMES = [
+  'src',
+  'scheme',
+  'levels',
+  'renderMode',
+  'controlMesh',
+  'controlEdges',
+  'bbox',
+  'triangulate',
+  'rules',
+  'view',
+  'controls',
+  'alt',
+  'background',
+] as const;
+
 export class ViewerAttributes extends HTMLElement {
   get src(): string {
     return this.getAttribute('src') ?? '';
@@ -88,6 +105,19 @@ export class ViewerAttributes extends HTMLElement {
   }
   set background(value: string) {
     this.setAttribute('background', value);
+  }
+
+  /**
+   * Re-applies properties a page set before the element was defined (they
+   * were stored on the plain element and would hide these accessors).
+   */
+  protected upgradeProperties(): void {
+    for (const name of PROPERTY_NAMES) {
+      if (!Object.hasOwn(this, name)) continue;
+      const value = (this as unknown as Record<string, unknown>)[name];
+      delete (this as unknown as Record<string, unknown>)[name];
+      (this as unknown as Record<string, unknown>)[name] = value;
+    }
   }
 
   protected readState(): EmbedState {

@@ -34,6 +34,7 @@ export const VIEW_COLORS = {
   background: '#f3f4f6',
   surface: '#8db4dc',
   edges: '#1f2d3d',
+  edgesOnDark: '#dce3ea',
   control: '#e8590c',
   curves: '#c2255c',
   bbox: '#6b7280',
@@ -298,6 +299,9 @@ export class SceneView {
   /** The colour behind the model (a CSS colour; null: transparent). */
   setBackground(color: string | null): void {
     this.background = color;
+    // Polygon edges stay visible on a dark background.
+    const dark = color !== null && new Color(color).getHSL({ h: 0, s: 0, l: 0 }).l < 0.35;
+    (this.edgeLines.material as LineBasicMaterial).color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
     this.dirty = true;
   }
 
@@ -377,7 +381,9 @@ export class SceneView {
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
     this.controls.handleResize();
-    this.render();
+    // Off screen (maybe with its GPU copies given back) it draws when it comes back.
+    if (this.onScreen) this.render();
+    else this.dirty = true;
   }
 
   /** Near and far planes that follow the camera distance, so zooming never clips the model. */

@@ -9,18 +9,28 @@ function isTriple(value: unknown): value is [number, number, number] {
   return Array.isArray(value) && value.length === 3 && value.every((x) => typeof x === 'number' && Number.isFinite(x));
 }
 
+/**
+ * `value` as a ViewState when it is one a camera can take: three finite
+ * triples, the eye off the target and a non-zero up; null otherwise.
+ */
+export function checkedView(value: unknown): ViewState | null {
+  if (typeof value !== 'object' || value === null) return null;
+  const { position, target, up } = value as Partial<ViewState>;
+  if (!isTriple(position) || !isTriple(target) || !isTriple(up)) return null;
+  const eye = position.map((p, i) => p - target[i]);
+  if (Math.hypot(...eye) === 0 || Math.hypot(...up) === 0) return null;
+  return { position: [...position], target: [...target], up: [...up] };
+}
+
 /** Parses a stored view; null when `text` is not one. */
 export function parseViewState(text: string | null): ViewState | null {
   if (!text) return null;
   try {
-    const value = JSON.parse(text) as Partial<ViewState>;
-    if (isTriple(value.position) && isTriple(value.target) && isTriple(value.up)) {
-      return { position: value.position, target: value.target, up: value.up };
-    }
+    return checkedView(JSON.parse(text));
   } catch {
     // Not JSON: treat as no saved view.
+    return null;
   }
-  return null;
 }
 
 /** Shortest decimal that keeps `x` to 6 significant digits ("1.5", "-0.000123"). */
@@ -44,9 +54,5 @@ export function parseViewString(text: string | null | undefined): ViewState | nu
   const parts = text.split(',');
   if (parts.length !== 9 || parts.some((p) => p.trim() === '')) return null;
   const n = parts.map(Number);
-  if (!n.every(Number.isFinite)) return null;
-  const view: ViewState = { position: [n[0], n[1], n[2]], target: [n[3], n[4], n[5]], up: [n[6], n[7], n[8]] };
-  const eye = view.position.map((p, i) => p - view.target[i]);
-  if (Math.hypot(...eye) === 0 || Math.hypot(...view.up) === 0) return null;
-  return view;
+  return checkedView({ position: [n[0], n[1], n[2]], target: [n[3], n[4], n[5]], up: [n[6], n[7], n[8]] });
 }

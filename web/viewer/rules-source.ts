@@ -2,14 +2,34 @@
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
 import { LoadError } from './mesh-source';
 
-/** Fetches and parses the rule-set JSON at `url` (relative to `base`); refuses with a LoadError or parse error. */
+/** Largest rule file read from a URL (the shipped ones are about 1 kB). */
+export const MAX_RULES_BYTES = 256 * 1024;
+
+/**
+ * Fetches and parses the rule-set JSON at `url` (http or https, relative to
+ * `base`, at most {@link MAX_RULES_BYTES}); refuses with a LoadError or the
+ * rule set's parse error.
+ */
 export async function fetchRuleSet(url: string, base: string): Promise<RuleSet> {
+  let resolved: URL;
+  try {
+    resolved = new URL(url, base);
+  } catch {
+    throw new LoadError(url, 'This is not a valid URL.');
+  }
+  if (resolved.protocol !== 'http:' && resolved.protocol !== 'https:') {
+    throw new LoadError(url, `Only http and https URLs can be loaded, not ${resolved.protocol}`);
+  }
   let response: Response;
   try {
-    response = await fetch(new URL(url, base), { credentials: 'omit' });
+    response = await fetch(resolved, { credentials: 'omit' });
   } catch {
     throw new LoadError(url, 'The rule file could not be downloaded.');
   }
   if (!response.ok) throw new LoadError(url, `The server answered ${response.status} for the rule file.`);
-  return parseRuleSetText(await response.text());
+  const text = await response.text();
+  if (text.length > MAX_RULES_BYTES) throw new LoadError(url, 'This is too large for a rule file.');
+  // Not quoted back: an embedding page may be on another origin.
+  if (!text.trimStart().startsWith('{')) throw new LoadError(url, 'This is not a rule file (a JSON object).');
+  return parseRuleSetText(text);
 }

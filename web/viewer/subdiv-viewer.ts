@@ -8,7 +8,7 @@
  * DOM outside its container, so an app shell or an embed adds the panels.
  */
 import type { Mesh, MeshFacts, MeshFormat, SchemeName, SizePrediction, SubdivideOptions } from '../core/mesh';
-import { type CoreSession, type LevelData, pageCore, type WorkerClient } from '../core/worker-client';
+import { CancelledError, type CoreSession, type LevelData, pageCore, type WorkerClient } from '../core/worker-client';
 import { LevelGraphics } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
@@ -89,6 +89,7 @@ export class SubdivViewer {
   private generation = 0;
   /** A step is between its prediction and its result (possibly waiting for a confirmation). */
   private stepping = false;
+  private disposed = false;
 
   constructor(container: HTMLElement, options: SubdivViewerOptions = {}) {
     this.core = (options.client ?? pageCore()).session();
@@ -161,7 +162,7 @@ export class SubdivViewer {
    * Resolves false when declined or when nothing is loaded.
    */
   async subdivide(): Promise<boolean> {
-    if (this.levels.length === 0 || this.busyState || this.stepping) return false;
+    if (this.disposed || this.levels.length === 0 || this.busyState || this.stepping) return false;
     this.stepping = true;
     const generation = this.generation;
     const from = this.levels.length - 1;
@@ -326,6 +327,7 @@ export class SubdivViewer {
 
   /** Frees the GPU objects and the view, and cancels this viewer's requests (the page's worker stays). */
   dispose(): void {
+    this.disposed = true;
     this.generation++;
     for (const level of this.levels) level.graphics?.dispose();
     this.levels = [];
@@ -336,6 +338,7 @@ export class SubdivViewer {
   }
 
   private async replaceWith(name: string, produce: () => Promise<LevelData>): Promise<void> {
+    if (this.disposed) throw new CancelledError();
     this.cancel();
     const generation = ++this.generation;
     this.setBusy({ kind: 'load', label: `Loading ${name}…`, since: performance.now() });

@@ -26,6 +26,8 @@ export interface ViewerParams {
   levels?: number;
   renderMode?: RenderMode;
   overlays?: Partial<Record<OverlayName, boolean>>;
+  /** Triangulate first (a scheme that needs triangles on a polygon mesh). */
+  triangulate?: boolean;
   view?: ViewState;
   /** URL of a rule-set JSON (scheme `custom`). */
   rules?: string;
@@ -38,6 +40,7 @@ export const PARAM_KEYS = {
   scheme: 'scheme',
   levels: 'levels',
   renderMode: 'mode',
+  triangulate: 'triangulate',
   view: 'view',
   rules: 'rules',
   controls: 'controls',
@@ -103,6 +106,12 @@ export function parseViewerParams(text: string | URLSearchParams): ParsedParams 
     if (on === null) problems.push(`${OVERLAY_KEYS[name]} must be 1 or 0, not "${value}".`);
     else params.overlays = { ...params.overlays, [name]: on };
   }
+  const triangulate = get(PARAM_KEYS.triangulate);
+  if (triangulate !== null) {
+    const on = parseFlag(triangulate);
+    if (on === null) problems.push(`triangulate must be 1 or 0, not "${triangulate}".`);
+    else params.triangulate = on;
+  }
   const view = get(PARAM_KEYS.view);
   if (view !== null) {
     const parsed = parseViewString(view);
@@ -130,6 +139,7 @@ export function formatViewerParams(params: ViewerParams): URLSearchParams {
     const on = params.overlays?.[name];
     if (on !== undefined) query.set(OVERLAY_KEYS[name], on ? '1' : '0');
   }
+  if (params.triangulate) query.set(PARAM_KEYS.triangulate, '1');
   if (params.rules) query.set(PARAM_KEYS.rules, params.rules);
   if (params.view) query.set(PARAM_KEYS.view, formatViewString(params.view));
   if (params.controls) query.set(PARAM_KEYS.controls, params.controls);
