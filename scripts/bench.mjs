@@ -2,9 +2,11 @@
 // `npm run bench` (after setup.mjs): one level of each scheme on a real mesh
 // of about 100k faces, natively (build/native/subdiv_bench_native, from
 // wasm/bench/bench_native.cpp) and in Node through the WASM module
-// (build/cli/bench-wasm.mjs), from the same C++ core. Prints the median of
-// RUNS timed runs (after one warm-up) and the WASM/native ratio per scheme,
-// and writes build/bench.json.
+// (build/cli/bench-wasm.mjs), from the same C++ core, and for Loop and
+// Catmull-Clark with OpenSubdiv's Far layer (subdiv_bench_osd, from
+// wasm/bench/bench_osd.cpp and Debian's libosd-dev). Prints the median of
+// RUNS timed runs (after one warm-up), ns per output face, and the WASM time
+// as a ratio to native CGAL and to OpenSubdiv, and writes build/bench.json.
 // Usage: node scripts/bench.mjs [MESH.off] [--runs N]
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -38,8 +40,14 @@ const buildDir = join(root, 'build', 'native');
 if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
   run('cmake', ['-S', 'wasm', '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']);
 }
-console.log('[bench] building subdiv_bench_native (Release)');
+console.log('[bench] building subdiv_bench_native and subdiv_bench_osd (Release)');
 run('cmake', ['--build', buildDir, '--parallel', '2', '--target', 'subdiv_bench_native']);
+const osdBench = join(buildDir, 'subdiv_bench_osd');
+const OSD_SCHEMES = ['catmull-clark', 'loop'];
+const hasOsd =
+  spawnSync('cmake', ['--build', buildDir, '--parallel', '2', '--target', 'subdiv_bench_osd'], { cwd: root }).status ===
+    0 && existsSync(osdBench);
+if (!hasOsd) console.log('[bench] OpenSubdiv (libosd-dev) not found: no OpenSubdiv column');
 
 const counts = /OFF\s+(\d+)\s+(\d+)/.exec(readFileSync(meshPath, 'utf8').slice(0, 4096));
 const size = counts ? ` (${counts[1]} vertices, ${counts[2]} faces)` : '';
@@ -56,30 +64,48 @@ const { benchWasm } = await import(pathToFileURL(wasmBundle).href);
 // during the run affects both sides of a ratio alike.
 const native = [];
 const wasm = [];
+const osd = [];
 for (const scheme of SCHEMES) {
-  console.log(`[bench] ${scheme}: native, then WASM in Node`);
+  const withOsd = hasOsd && OSD_SCHEMES.includes(scheme);
+  console.log(`[bench] ${scheme}: native, ${withOsd ? 'OpenSubdiv, ' : ''}then WASM in Node`);
   native.push(JSON.parse(run(join(buildDir, 'subdiv_bench_native'), [meshPath, String(runs), scheme]).trim()));
+  if (withOsd) osd.push(JSON.parse(run(osdBench, [meshPath, String(runs), '1', scheme]).trim()));
   wasm.push(...(await benchWasm(meshPath, runs, [scheme])));
 }
 
 const rows = SCHEMES.map((scheme) => {
   const n = native.find((r) => r.scheme === scheme);
   const w = wasm.find((r) => r.scheme === scheme);
-  if (n.faces !== w.faces) {
-    console.error(`error: ${scheme}: native gives ${n.faces} faces, WASM ${w.faces}`);
-    process.exit(1);
+  const o = osd.find((r) => r.scheme === scheme);
+  for (const [who, r] of [
+    ['WASM', w],
+    ['OpenSubdiv', o],
+  ]) {
+    if (r && r.faces !== n.faces) {
+      console.error(`error: ${scheme}: native gives ${n.faces} faces, ${who} ${r.faces}`);
+      process.exit(1);
+    }
   }
-  return { scheme, faces: n.faces, wasm_ms: w.median_ms, native_ms: n.median_ms, ratio: w.median_ms / n.median_ms };
+  return {
+    scheme,
+    faces: n.faces,
+    wasm_ms: w.median_ms,
+    wasm_ns_per_face: (w.median_ms * 1e6) / n.faces,
+    native_ms: n.median_ms,
+    osd_ms: o?.median_ms ?? null,
+    ratio: w.median_ms / n.median_ms,
+    ratio_osd: o ? w.median_ms / o.median_ms : null,
+  };
 });
 
 const pad = (s, n) => String(s).padEnd(n);
-const num = (x, n) => x.toFixed(n).padStart(10);
-console.log(
-  `\n${pad('scheme', 15)}${'faces out'.padStart(10)}${'WASM ms'.padStart(10)}${'native ms'.padStart(10)}${'ratio'.padStart(10)}`,
-);
+const num = (x, n) => (x === null ? '–' : x.toFixed(n)).padStart(11);
+const head = ['faces out', 'WASM ms', 'ns/face', 'CGAL ms', 'OSD ms', 'WASM/CGAL', 'WASM/OSD'];
+console.log(`\n${pad('scheme', 15)}${head.map((h) => h.padStart(11)).join('')}`);
 for (const r of rows) {
   console.log(
-    `${pad(r.scheme, 15)}${String(r.faces).padStart(10)}${num(r.wasm_ms, 1)}${num(r.native_ms, 1)}${num(r.ratio, 2)}`,
+    `${pad(r.scheme, 15)}${String(r.faces).padStart(11)}${num(r.wasm_ms, 1)}${num(r.wasm_ns_per_face, 0)}` +
+      `${num(r.native_ms, 1)}${num(r.osd_ms, 1)}${num(r.ratio, 2)}${num(r.ratio_osd, 2)}`,
   );
 }
 const machine = `${cpus()[0]?.model ?? 'unknown CPU'}, ${cpus().length} cores, Node ${process.version}`;
@@ -88,5 +114,5 @@ console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);
 mkdirSync(join(root, 'build'), { recursive: true });
 writeFileSync(
   join(root, 'build', 'bench.json'),
-  `${JSON.stringify({ mesh: basename(meshPath), runs, machine, rows, native, wasm }, null, 2)}\n`,
+  `${JSON.stringify({ mesh: basename(meshPath), runs, machine, rows, native, wasm, osd }, null, 2)}\n`,
 );

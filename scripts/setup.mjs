@@ -26,6 +26,7 @@ const DEBIAN_PACKAGES = [
   'chromium',
   'libcgal-demo',
   'clang-format',
+  'libosd-dev',
 ];
 
 function log(message) {
