@@ -215,6 +215,20 @@ test.describe('a page with twelve viewers and an iframe', () => {
       target.postMessage({ subdivlab: 'eval', code: 'alert(1)' }, '*');
       target.postMessage({ subdivlab: 'set-level', level: 2 }, '*');
     });
+    await page.evaluate(() => {
+      const frame = document.getElementById('frame') as HTMLIFrameElement;
+      (frame.contentWindow as Window).postMessage({ subdivlab: 'set-render-mode', mode: 'wireframe' }, '*');
+      (frame.contentWindow as Window).postMessage({ subdivlab: 'set-overlay', overlay: 'control-mesh', on: true }, '*');
+    });
+    const inner = page.frames().find((f) => f.url().includes('embed.html'));
+    await expect
+      .poll(() =>
+        inner?.evaluate(() => {
+          const v = document.querySelector('subdiv-viewer') as HTMLElementTagNameMap['subdiv-viewer'];
+          return [v.renderMode, v.controlMesh];
+        }),
+      )
+      .toEqual(['wireframe', true]);
     const loop2 = expectedClosedCounts('loop', MESHES.tetrahedron, 2);
     await expect
       .poll(async () => (await embed.events('message:level-change')).at(-1)?.detail)
@@ -526,6 +540,20 @@ test.describe('what pages do to an element', () => {
       await page.waitForTimeout(2000);
       expect((await embed.reading('slow')).facts).toMatchObject(MESHES.tetrahedron);
       expect((await embed.events('load', 'slow')).map((e) => e.detail.modelName)).toEqual(['tetra.off']);
+    });
+    await test.step('cancel() stops a download: progress says so, nothing is loaded', async () => {
+      await page.locator('#gone').evaluate(async (e) => {
+        e.setAttribute('src', '../slow/third.off');
+        await new Promise((r) => setTimeout(r, 200));
+        (e as HTMLElementTagNameMap['subdiv-viewer']).cancel();
+      });
+      await page.waitForTimeout(1800);
+      expect((await embed.events('progress', 'gone')).map((e) => e.detail)).toEqual([
+        { busy: true, kind: 'load', label: 'Downloading third.off…' },
+        { busy: false, kind: null, label: '' },
+      ]);
+      expect(await embed.events('load', 'gone')).toEqual([]);
+      expect(await embed.events('error', 'gone')).toEqual([]);
     });
     await test.step('an element removed while its src downloads does nothing more', async () => {
       await page.locator('#gone').evaluate(async (e) => {

@@ -106,7 +106,29 @@ describe('iframe commands', () => {
     ).toMatchObject({ ok: true });
   });
 
+  it('accept display commands', () => {
+    expect(checkCommand({ subdivlab: 'set-render-mode', mode: 'wireframe' })).toEqual({
+      ok: true,
+      command: { subdivlab: 'set-render-mode', mode: 'wireframe' },
+    });
+    expect(checkCommand({ subdivlab: 'set-overlay', overlay: 'bbox', on: false })).toEqual({
+      ok: true,
+      command: { subdivlab: 'set-overlay', overlay: 'bbox', on: false },
+    });
+    expect(checkCommand({ subdivlab: 'set-triangulate', on: true })).toMatchObject({ ok: true });
+  });
+
   it.each([
+    [{ subdivlab: 'set-render-mode', mode: 'glossy' }, 'set-render-mode: unknown mode "glossy"'],
+    [
+      { subdivlab: 'set-overlay', overlay: 'src', on: true },
+      'set-overlay needs overlay (control-mesh, control-edges or bbox) and on (true or false)',
+    ],
+    [
+      { subdivlab: 'set-overlay', overlay: 'bbox', on: 1 },
+      'set-overlay needs overlay (control-mesh, control-edges or bbox) and on (true or false)',
+    ],
+    [{ subdivlab: 'set-triangulate', on: 'yes' }, 'set-triangulate needs on (true or false)'],
     [null, 'a command is an object { subdivlab: NAME, ... }'],
     ['set-level 2', 'a command is an object { subdivlab: NAME, ... }'],
     [[1, 2], 'a command is an object { subdivlab: NAME, ... }'],

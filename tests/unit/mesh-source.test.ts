@@ -7,6 +7,7 @@
 import { createServer, type Server } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { CancelledError } from '../../web/core/worker-client';
 import { detectFormat, fetchMesh, LoadError } from '../../web/viewer/mesh-source';
 
 const CUBE = 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n';
@@ -32,6 +33,10 @@ beforeAll(async () => {
       // A single-page-app host answers every path with its index page.
       response.writeHead(200, { 'content-type': 'text/html; charset=utf-8' });
       response.end('<!doctype html><title>App</title>');
+    } else if (url.pathname === '/slow.off') {
+      // Headers at once, the body never: only an abort ends the download.
+      response.writeHead(200, { 'content-type': 'text/plain' });
+      response.write('OFF\n');
     } else if (url.pathname === '/mesh') {
       response.writeHead(200);
       response.end('# no extension\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n');
@@ -90,6 +95,13 @@ describe('fetchMesh', () => {
     await expect(fetchMesh('spa/cube.off', base)).rejects.toThrow(
       'The server sent a web page, not a mesh: is the URL right?',
     );
+  });
+
+  it('stops a download when its signal aborts, with CancelledError', async () => {
+    const controller = new AbortController();
+    const download = fetchMesh('slow.off', base, undefined, controller.signal);
+    setTimeout(() => controller.abort(), 50);
+    await expect(download).rejects.toBeInstanceOf(CancelledError);
   });
 
   it('reports the server status', async () => {

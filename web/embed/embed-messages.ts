@@ -6,10 +6,13 @@
  *
  * Commands: `load` ({ src } or { text, name }), `set-scheme` ({ scheme }),
  * `subdivide`, `set-level` ({ level }), `set-view` ({ view }: the nine-number
- * string or { position, target, up }).
+ * string or { position, target, up }), `set-render-mode` ({ mode }),
+ * `set-overlay` ({ overlay: control-mesh, control-edges or bbox; on }),
+ * `set-triangulate` ({ on }).
  * Events: `ready`, `load`, `level-change`, `error`, `progress`.
  */
 import type { SchemeName } from '../core/mesh';
+import { RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { checkedView, parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
 import { MAX_PARAM_LEVELS } from '../viewer/viewer-params';
@@ -20,7 +23,14 @@ export type EmbedCommand =
   | { subdivlab: 'set-scheme'; scheme: SchemeName }
   | { subdivlab: 'subdivide' }
   | { subdivlab: 'set-level'; level: number }
-  | { subdivlab: 'set-view'; view: ViewState };
+  | { subdivlab: 'set-view'; view: ViewState }
+  | { subdivlab: 'set-render-mode'; mode: RenderMode }
+  | { subdivlab: 'set-overlay'; overlay: OverlayAttribute; on: boolean }
+  | { subdivlab: 'set-triangulate'; on: boolean };
+
+/** The overlays a command may switch, by their attribute names. */
+export const OVERLAY_ATTRIBUTES = ['control-mesh', 'control-edges', 'bbox'] as const;
+export type OverlayAttribute = (typeof OVERLAY_ATTRIBUTES)[number];
 
 export type EmbedEventName = 'ready' | 'load' | 'level-change' | 'error' | 'progress';
 
@@ -69,6 +79,25 @@ export function checkCommand(data: unknown): Checked {
       if (view) return { ok: true, command: { subdivlab: 'set-view', view } };
       return { ok: false, reason: 'set-view needs view: nine numbers, or { position, target, up }' };
     }
+    case 'set-render-mode': {
+      const known = RENDER_MODES.find((m) => m.mode === data.mode);
+      if (known) return { ok: true, command: { subdivlab: 'set-render-mode', mode: known.mode } };
+      return { ok: false, reason: `set-render-mode: unknown mode ${JSON.stringify(data.mode)}` };
+    }
+    case 'set-overlay':
+      if ((OVERLAY_ATTRIBUTES as readonly unknown[]).includes(data.overlay) && typeof data.on === 'boolean') {
+        return {
+          ok: true,
+          command: { subdivlab: 'set-overlay', overlay: data.overlay as OverlayAttribute, on: data.on },
+        };
+      }
+      return {
+        ok: false,
+        reason: 'set-overlay needs overlay (control-mesh, control-edges or bbox) and on (true or false)',
+      };
+    case 'set-triangulate':
+      if (typeof data.on === 'boolean') return { ok: true, command: { subdivlab: 'set-triangulate', on: data.on } };
+      return { ok: false, reason: 'set-triangulate needs on (true or false)' };
     default:
       return { ok: false, reason: `unknown command ${JSON.stringify(name)}` };
   }

@@ -53,8 +53,9 @@ window.addEventListener('message', (event: MessageEvent) => {
   const command = checked.command;
   switch (command.subdivlab) {
     case 'load':
-      if ('src' in command) viewer.src = command.src;
-      else void viewer.load(command.text, command.name).catch(() => undefined);
+      if (!('src' in command)) void viewer.load(command.text, command.name).catch(() => undefined);
+      else if (command.src === viewer.src) void viewer.reload();
+      else viewer.src = command.src;
       break;
     case 'set-scheme':
       viewer.scheme = command.scheme;
@@ -67,6 +68,16 @@ window.addEventListener('message', (event: MessageEvent) => {
       break;
     case 'set-view':
       viewer.setView(command.view);
+      break;
+    case 'set-render-mode':
+      viewer.renderMode = command.mode;
+      break;
+    case 'set-overlay':
+      if (command.on) viewer.setAttribute(command.overlay, '');
+      else viewer.removeAttribute(command.overlay);
+      break;
+    case 'set-triangulate':
+      viewer.triangulate = command.on;
       break;
   }
 });

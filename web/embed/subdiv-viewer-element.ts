@@ -85,6 +85,8 @@ export class SubdivViewerElement extends ViewerAttributes {
   private loadedRules = '';
   /** Bumped by load(): a src download that finishes later is dropped. */
   private modelEpoch = 0;
+  /** The src download under way: a new src, load(), cancel() or removal aborts it. */
+  private download: { controller: AbortController; name: string } | null = null;
   private syncing: Promise<void> | null = null;
   private syncAgain = false;
   /** What the running pass aims at (null between passes). */
@@ -152,6 +154,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.startObserver = null;
       this.releaseObserver?.disconnect();
       this.releaseObserver = null;
+      this.download?.controller.abort();
       this.viewer?.dispose();
       this.viewer = null;
       this.loadedSrc = null;
@@ -168,6 +171,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.applyDisplay(name === 'view');
       return;
     }
+    if (name === 'src') this.download?.controller.abort();
     // A change that makes the running step useless stops it; the levels computed so far stay.
     const running = this.passTarget;
     const stepping = this.viewer?.state.busy?.kind === 'subdivide';
@@ -219,8 +223,9 @@ export class SubdivViewerElement extends ViewerAttributes {
   async load(input: File | string, name = 'mesh.off'): Promise<void> {
     const viewer = this.start();
     const fileName = input instanceof File ? input.name : name;
-    // A src download still running is dropped when it arrives.
+    // A src download still running is stopped (or dropped, if it arrives all the same).
     this.modelEpoch++;
+    this.download?.controller.abort();
     this.loadedSrc = this.src;
     try {
       const mesh = input instanceof File ? await readFile(input) : meshText(name, input);
@@ -267,6 +272,7 @@ export class SubdivViewerElement extends ViewerAttributes {
   /** Stops this viewer's running step and the steps it was to run next (other viewers' work goes on). */
   cancel(): void {
     if (this.passTarget) this.passCancelled = true;
+    this.download?.controller.abort();
     this.viewer?.cancel();
   }
 
@@ -367,8 +373,14 @@ export class SubdivViewerElement extends ViewerAttributes {
     if (want.src && want.src !== this.loadedSrc) {
       this.loadedSrc = want.src;
       const epoch = this.modelEpoch;
+      const controller = new AbortController();
+      this.download = { controller, name: want.src.split(/[/?#]/).filter(Boolean).pop() ?? want.src };
+      this.onState(viewer.state);
       try {
-        const mesh = await fetchMesh(want.src, document.baseURI);
+        const mesh = await fetchMesh(want.src, document.baseURI, undefined, controller.signal).finally(() => {
+          if (this.download?.controller === controller) this.download = null;
+          if (alive()) this.onState(viewer.state);
+        });
         // Superseded while downloading: by load(), a new src, or the element's removal.
         if (!alive() || epoch !== this.modelEpoch || this.readState().src !== want.src) return false;
         await viewer.loadText(mesh.text, mesh.format, mesh.name);
@@ -457,18 +469,16 @@ export class SubdivViewerElement extends ViewerAttributes {
   private onState(state: ViewerState): void {
     this.controlBar.update(state);
     this.placeholder.hidden = state.levelCount > 0 || !this.message.hidden;
-    const busy = state.busy !== null;
+    const busy = state.busy !== null || this.download !== null;
+    const kind = state.busy?.kind ?? (this.download ? 'load' : null);
+    const label = state.busy?.label ?? (this.download ? `Downloading ${this.download.name}…` : '');
     this.busyBox.hidden = !busy;
-    this.busyLabel.textContent = state.busy?.label ?? '';
+    this.busyLabel.textContent = label;
     if (!this.getAttribute('alt')) this.stage.setAttribute('aria-label', this.describe());
     const prev = this.last;
     this.last = { level: state.level, facts: state.facts, busy, scheme: state.scheme };
     if (!prev || prev.busy !== busy) {
-      this.dispatch('progress', {
-        busy,
-        kind: state.busy?.kind ?? null,
-        label: state.busy?.label ?? '',
-      } as ProgressDetail);
+      this.dispatch('progress', { busy, kind, label } as ProgressDetail);
     }
     const changed = !prev || prev.level !== state.level || prev.facts !== state.facts || prev.scheme !== state.scheme;
     if (state.facts && changed) {

@@ -5,6 +5,7 @@
  * whose message says why.
  */
 import type { MeshFormat } from '../core/mesh';
+import { CancelledError } from '../core/worker-client';
 
 /** Largest file the app reads: the core's heap ends at 4 GB and text is about 3× the mesh. */
 export const MAX_FILE_BYTES = 256 * 1024 * 1024;
@@ -76,9 +77,23 @@ export function nameFromUrl(url: URL): string {
 /**
  * Fetches a mesh from `src` (absolute, or relative to `base`). Only http and
  * https; reading stops as soon as more than `maxBytes` arrived, whatever the
- * Content-Length said.
+ * Content-Length said. Aborting `signal` rejects with CancelledError.
  */
-export async function fetchMesh(src: string, base: string, maxBytes = MAX_URL_BYTES): Promise<MeshText> {
+export async function fetchMesh(
+  src: string,
+  base: string,
+  maxBytes = MAX_URL_BYTES,
+  signal?: AbortSignal,
+): Promise<MeshText> {
+  try {
+    return await download(src, base, maxBytes, signal);
+  } catch (error) {
+    if (signal?.aborted) throw new CancelledError();
+    throw error;
+  }
+}
+
+async function download(src: string, base: string, maxBytes: number, signal?: AbortSignal): Promise<MeshText> {
   let url: URL;
   try {
     url = new URL(src, base);
@@ -91,7 +106,7 @@ export async function fetchMesh(src: string, base: string, maxBytes = MAX_URL_BY
   const name = nameFromUrl(url);
   let response: Response;
   try {
-    response = await fetch(url, { credentials: 'omit' });
+    response = await fetch(url, { credentials: 'omit', signal });
   } catch {
     throw new LoadError(
       src,
