@@ -84,6 +84,15 @@ describe('element attributes', () => {
   });
 });
 
+describe('element attributes, together', () => {
+  it('name scheme="custom" without rules as a problem of the rules attribute', () => {
+    expect(readEmbedState(attrs({ scheme: 'custom' })).problems).toEqual([
+      { attribute: 'rules', message: 'scheme="custom" needs a rules attribute: the URL of a rule-set JSON.' },
+    ]);
+    expect(readEmbedState(attrs({ scheme: 'custom', rules: 'rules/loop.json' })).problems).toEqual([]);
+  });
+});
+
 describe('iframe commands', () => {
   it('accept the documented commands with their fields', () => {
     expect(checkCommand({ subdivlab: 'load', src: 'meshes/cube.off' })).toEqual({

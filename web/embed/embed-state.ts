@@ -79,6 +79,13 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
         message: `controls must be none, minimal or full, not "${controlsText}".`,
       });
   }
+  const rules = attr('rules')?.trim() ?? '';
+  if (scheme === 'custom' && !rules) {
+    problems.push({
+      attribute: 'rules',
+      message: 'scheme="custom" needs a rules attribute: the URL of a rule-set JSON.',
+    });
+  }
   const backgroundText = attr('background')?.trim() || null;
   const background = backgroundText !== null && isColour(backgroundText) ? backgroundText : null;
   if (backgroundText !== null && background === null) {
@@ -94,7 +101,7 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     renderMode,
     overlays: { control: flag('control-mesh'), curves: flag('control-edges'), bbox: flag('bbox') },
     triangulate: flag('triangulate'),
-    rules: attr('rules')?.trim() ?? '',
+    rules,
     view,
     controls,
     alt: attr('alt') ?? '',

@@ -12,26 +12,19 @@ import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
 import { nextRenderMode, type OverlayName } from '../render/render-mode';
 import { checkedView, parseViewString, type ViewState } from '../render/view-state';
-import { el } from '../ui/dom';
 import { faceTypes } from '../ui/facts-panel';
 import { installShortcuts } from '../ui/shortcuts';
 import { handleViewKey } from '../ui/view-keys';
 import { formatBytes } from '../viewer/memory-budget';
-import { fetchMesh, meshText, readFile } from '../viewer/mesh-source';
-import { fetchRuleSet } from '../viewer/rules-source';
+import { meshText, readFile } from '../viewer/mesh-source';
 import { schemeInfo } from '../viewer/scheme-info';
 import { SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
 import { MAX_PARAM_LEVELS } from '../viewer/viewer-params';
+import { EmbedChrome } from './embed-chrome';
 import { EmbedControls } from './embed-controls';
-import {
-  AttributeError,
-  errorDetail,
-  type LevelChangeDetail,
-  type LoadDetail,
-  type ProgressDetail,
-} from './embed-events';
-import type { EmbedState } from './embed-state';
-import { EMBED_CSS } from './embed-styles';
+import { whenFar, whenNear } from './embed-distance';
+import { errorDetail, type LevelChangeDetail, type LoadDetail, type ProgressDetail } from './embed-events';
+import { EmbedSync } from './embed-sync';
 import { ViewerAttributes } from './viewer-attributes';
 
 export const OBSERVED_ATTRIBUTES = [
@@ -62,60 +55,36 @@ const DISPLAY_ATTRIBUTES = new Set([
   'background',
 ]);
 
-/** Margins of the viewport within which a viewer starts, and beyond which it frees its GPU memory. */
-const START_MARGIN = '200px 0px';
-const RELEASE_MARGIN = '150% 0px';
-
 export class SubdivViewerElement extends ViewerAttributes {
   static readonly observedAttributes = OBSERVED_ATTRIBUTES;
 
   private viewer: SubdivViewer | null = null;
-  private readonly stage: HTMLElement;
   private readonly controlBar: EmbedControls;
-  private readonly message: HTMLElement;
-  private readonly status: HTMLElement;
-  private readonly busyBox: HTMLElement;
-  private readonly busyLabel: HTMLElement;
-  private readonly placeholder: HTMLElement;
-  private startObserver: IntersectionObserver | null = null;
-  private releaseObserver: IntersectionObserver | null = null;
+  private readonly chrome: EmbedChrome;
+  /** Stop watching the distance to the viewport (start, release). */
+  private unwatch: (() => void)[] = [];
   private readonly darkQuery = window.matchMedia('(prefers-color-scheme: dark)');
-  /** The src whose model is shown (or whose load failed: not retried until the attribute changes). */
-  private loadedSrc: string | null = null;
-  private loadedRules = '';
-  /** Bumped by load(): a src download that finishes later is dropped. */
-  private modelEpoch = 0;
-  /** The src download under way: a new src, load(), cancel() or removal aborts it. */
-  private download: { controller: AbortController; name: string } | null = null;
-  private syncing: Promise<void> | null = null;
-  private syncAgain = false;
-  /** What the running pass aims at (null between passes). */
-  private passTarget: EmbedState | null = null;
-  /** cancel() during the running pass: it computes no further level. */
-  private passCancelled = false;
-  /** Failures reported during the running pass: a pass without any clears the message. */
-  private passFailures = 0;
-  /** Attribute problems already reported (an attribute's problem is reported once, not on every pass). */
-  private reportedProblems = new Set<string>();
+  private readonly sync = new EmbedSync({
+    viewer: () => this.viewer,
+    readState: () => this.readState(),
+    fail: (source, error) => this.fail(source, error),
+    loaded: () => {
+      const viewer = this.viewer;
+      if (!viewer) return;
+      this.chrome.setPlaceholder(null);
+      this.applyDisplay(true);
+      this.dispatch('load', { modelName: viewer.state.modelName, facts: viewer.state.facts } as LoadDetail);
+    },
+    downloadChanged: () => {
+      if (this.viewer) this.onState(this.viewer.state);
+    },
+    allWell: () => this.chrome.hideMessage(),
+  });
   private last: { level: number; facts: MeshFacts | null; busy: boolean; scheme: SchemeName } | null = null;
   private gpuReleasedFlag = false;
 
   constructor() {
     super();
-    const root = this.attachShadow({ mode: 'open', delegatesFocus: false });
-    const style = document.createElement('style');
-    style.textContent = EMBED_CSS;
-    this.stage = el('div', { className: 'stage', attrs: { part: 'stage', role: 'region' } });
-    this.placeholder = el('div', { className: 'placeholder', text: 'Loading…' });
-    this.message = el('div', { className: 'message', attrs: { part: 'message', role: 'alert' } });
-    this.message.hidden = true;
-    this.status = el('div', { className: 'status', attrs: { role: 'status', 'aria-live': 'polite' } });
-    this.busyLabel = el('span');
-    const cancel = el('button', { text: 'Cancel', attrs: { type: 'button', part: 'cancel' } });
-    cancel.addEventListener('click', () => this.cancel());
-    this.busyBox = el('div', { className: 'busy', attrs: { part: 'progress' } }, this.busyLabel, cancel);
-    this.busyBox.hidden = true;
-    this.stage.append(this.placeholder, this.message, this.busyBox, this.status);
     this.controlBar = new EmbedControls({
       stepLevel: (delta) => void this.stepLevel(delta),
       scheme: (scheme) => {
@@ -127,7 +96,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       overlay: (name, on) => this.setFlag(name === 'control' ? 'control-mesh' : 'control-edges', on),
       fit: () => this.viewer?.fitView(),
     });
-    root.append(style, el('div', { className: 'frame' }, this.stage, this.controlBar.element));
+    this.chrome = new EmbedChrome(this.attachShadow({ mode: 'open' }), this.controlBar, () => this.cancel());
     this.installKeys();
     this.darkQuery.addEventListener('change', () => this.applyDisplay());
   }
@@ -137,31 +106,19 @@ export class SubdivViewerElement extends ViewerAttributes {
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     this.applyDisplay();
     if (this.viewer) return;
-    this.startObserver = new IntersectionObserver(
-      (entries) => {
-        if (entries.some((e) => e.isIntersecting)) this.start();
-      },
-      { rootMargin: START_MARGIN },
-    );
-    this.startObserver.observe(this);
+    this.unwatch.push(whenNear(this, () => this.start()));
   }
 
   disconnectedCallback(): void {
     // Moving the element in the page disconnects and connects it in one task: dispose only if it stays out.
     queueMicrotask(() => {
       if (this.isConnected) return;
-      this.startObserver?.disconnect();
-      this.startObserver = null;
-      this.releaseObserver?.disconnect();
-      this.releaseObserver = null;
-      this.download?.controller.abort();
+      for (const stop of this.unwatch.splice(0)) stop();
+      this.sync.reset();
       this.viewer?.dispose();
       this.viewer = null;
-      this.loadedSrc = null;
-      this.loadedRules = '';
       this.last = null;
       this.gpuReleasedFlag = false;
-      this.reportedProblems.clear();
     });
   }
 
@@ -171,12 +128,12 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.applyDisplay(name === 'view');
       return;
     }
-    if (name === 'src') this.download?.controller.abort();
+    if (name === 'src') this.sync.srcChanged();
     // A change that makes the running step useless stops it; the levels computed so far stay.
-    const running = this.passTarget;
+    const running = this.sync.runningLevels;
     const stepping = this.viewer?.state.busy?.kind === 'subdivide';
-    if (running && stepping && (name !== 'levels' || this.readState().levels < running.levels)) this.viewer?.cancel();
-    void this.sync();
+    if (running !== null && stepping && (name !== 'levels' || this.readState().levels < running)) this.viewer?.cancel();
+    void this.sync.run();
   }
 
   /** The shown level (−1 before a model is loaded). */
@@ -215,7 +172,7 @@ export class SubdivViewerElement extends ViewerAttributes {
   async setLevel(n: number): Promise<number> {
     this.levels = Math.max(0, Math.min(MAX_PARAM_LEVELS, Math.round(n)));
     // The attribute's change started a pass if it changed; otherwise start one (a level that failed before).
-    await (this.syncing ?? this.sync());
+    await this.sync.current();
     return this.level;
   }
 
@@ -224,9 +181,7 @@ export class SubdivViewerElement extends ViewerAttributes {
     const viewer = this.start();
     const fileName = input instanceof File ? input.name : name;
     // A src download still running is stopped (or dropped, if it arrives all the same).
-    this.modelEpoch++;
-    this.download?.controller.abort();
-    this.loadedSrc = this.src;
+    this.sync.replaceModel(this.src);
     try {
       const mesh = input instanceof File ? await readFile(input) : meshText(name, input);
       await viewer.loadText(mesh.text, mesh.format, mesh.name);
@@ -236,14 +191,14 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.fail(fileName, error);
       throw error;
     }
-    await this.sync();
+    await this.sync.run();
   }
 
   /** Loads `src` again (after load(), or when the file behind the URL changed). */
   reload(): Promise<void> {
-    this.loadedSrc = null;
+    this.sync.forgetSrc();
     this.start();
-    return this.sync();
+    return this.sync.run();
   }
 
   /** PNG of the view at `scale` × its size. */
@@ -271,8 +226,7 @@ export class SubdivViewerElement extends ViewerAttributes {
 
   /** Stops this viewer's running step and the steps it was to run next (other viewers' work goes on). */
   cancel(): void {
-    if (this.passTarget) this.passCancelled = true;
-    this.download?.controller.abort();
+    this.sync.cancel();
     this.viewer?.cancel();
   }
 
@@ -280,10 +234,8 @@ export class SubdivViewerElement extends ViewerAttributes {
 
   private start(): SubdivViewer {
     if (this.viewer) return this.viewer;
-    this.startObserver?.disconnect();
-    this.startObserver = null;
     const initial = this.readState();
-    const viewer = new SubdivViewer(this.stage, {
+    const viewer = new SubdivViewer(this.chrome.stage, {
       scheme: initial.scheme,
       renderMode: initial.renderMode,
       // No dialog in a page: a step over the budget is refused, and says so.
@@ -299,22 +251,21 @@ export class SubdivViewerElement extends ViewerAttributes {
     this.viewer = viewer;
     viewer.onChange((state) => this.onState(state));
     this.controlBar.update(viewer.state);
-    this.releaseObserver = new IntersectionObserver(
-      (entries) => {
-        const near = entries.some((e) => e.isIntersecting);
-        if (!near && !this.gpuReleasedFlag) {
+    this.unwatch.push(
+      whenFar(
+        this,
+        () => {
           viewer.releaseGpu();
           this.gpuReleasedFlag = true;
-        } else if (near) {
+        },
+        () => {
           this.gpuReleasedFlag = false;
           viewer.view.requestRender();
-        }
-      },
-      { rootMargin: RELEASE_MARGIN },
+        },
+      ),
     );
-    this.releaseObserver.observe(this);
     this.applyDisplay();
-    void this.sync();
+    void this.sync.run();
     return viewer;
   }
 
@@ -325,130 +276,16 @@ export class SubdivViewerElement extends ViewerAttributes {
     await this.setLevel(next);
   }
 
-  /**
-   * Brings the viewer to what the attributes ask: model, rules, scheme, then
-   * levels. One pass at a time; a change during a pass runs another.
-   */
-  private sync(): Promise<void> {
-    if (!this.viewer) return Promise.resolve();
-    if (this.syncing) {
-      this.syncAgain = true;
-      return this.syncing;
-    }
-    this.syncing = (async () => {
-      try {
-        do {
-          this.syncAgain = false;
-          await this.syncOnce();
-        } while (this.syncAgain && this.viewer);
-      } finally {
-        this.syncing = null;
-      }
-    })();
-    return this.syncing;
-  }
-
-  private async syncOnce(): Promise<void> {
-    const viewer = this.viewer;
-    if (!viewer) return;
-    const want = this.readState();
-    this.passTarget = want;
-    this.passFailures = 0;
-    this.passCancelled = false;
-    try {
-      if (await this.syncModel(viewer, want)) await this.syncLevels(viewer, want);
-    } finally {
-      this.passTarget = null;
-    }
-    const attributeProblems = this.readState().problems.length;
-    if (this.viewer === viewer && this.passFailures === 0 && attributeProblems === 0 && !this.syncAgain) {
-      this.hideMessage();
-    }
-  }
-
-  /** Model and rules as the attributes ask; false when the pass cannot go on (failed, superseded, removed). */
-  private async syncModel(viewer: SubdivViewer, want: EmbedState): Promise<boolean> {
-    this.reportProblems(want.problems);
-    const alive = () => this.viewer === viewer;
-    if (want.src && want.src !== this.loadedSrc) {
-      this.loadedSrc = want.src;
-      const epoch = this.modelEpoch;
-      const controller = new AbortController();
-      this.download = { controller, name: want.src.split(/[/?#]/).filter(Boolean).pop() ?? want.src };
-      this.onState(viewer.state);
-      try {
-        const mesh = await fetchMesh(want.src, document.baseURI, undefined, controller.signal).finally(() => {
-          if (this.download?.controller === controller) this.download = null;
-          if (alive()) this.onState(viewer.state);
-        });
-        // Superseded while downloading: by load(), a new src, or the element's removal.
-        if (!alive() || epoch !== this.modelEpoch || this.readState().src !== want.src) return false;
-        await viewer.loadText(mesh.text, mesh.format, mesh.name);
-        if (!alive()) return false;
-        this.placeholder.hidden = true;
-        this.applyDisplay(true);
-        this.dispatch('load', { modelName: mesh.name, facts: viewer.state.facts } as LoadDetail);
-      } catch (error) {
-        // Cancelled (Esc while loading): the src is still to be loaded, unless load() replaced it.
-        if (error instanceof CancelledError && epoch === this.modelEpoch) this.loadedSrc = null;
-        if (alive()) this.fail(want.src, error);
-        return false;
-      }
-    }
-    if (want.rules !== this.loadedRules) {
-      this.loadedRules = want.rules;
-      try {
-        viewer.setSchemeOptions(want.rules ? { rules: await fetchRuleSet(want.rules, document.baseURI) } : {});
-      } catch (error) {
-        if (alive()) this.fail(want.rules, error);
-        return false;
-      }
-      if (!alive()) return false;
-    }
-    if (want.scheme === 'custom' && !want.rules) {
-      this.fail('scheme', new AttributeError('scheme="custom" needs a rules attribute: the URL of a rule-set JSON.'));
-      return false;
-    }
-    if (viewer.state.triangulate !== want.triangulate) viewer.setTriangulate(want.triangulate);
-    viewer.setScheme(want.scheme);
-    return viewer.state.levelCount > 0;
-  }
-
-  /** Computes the levels up to the one asked and shows it (or the highest reached). */
-  private async syncLevels(viewer: SubdivViewer, want: EmbedState): Promise<void> {
-    try {
-      while (viewer.state.levelCount - 1 < want.levels && !this.syncAgain && !this.passCancelled) {
-        const stepped = await viewer.subdivide();
-        if (this.viewer !== viewer) return;
-        if (!stepped) break;
-      }
-    } catch (error) {
-      if (this.viewer !== viewer) return;
-      this.fail(viewer.state.modelName ?? 'mesh', error);
-    }
-    viewer.setLevel(want.levels);
-  }
-
-  /** Reports each attribute problem once (until the attribute changes), as an `error` event and the message. */
-  private reportProblems(problems: EmbedState['problems']): void {
-    const now = new Set(problems.map((p) => `${p.attribute}\n${p.message}`));
-    for (const problem of problems) {
-      const key = `${problem.attribute}\n${problem.message}`;
-      if (!this.reportedProblems.has(key)) this.fail(problem.attribute, new AttributeError(problem.message));
-    }
-    this.reportedProblems = now;
-  }
-
   /** Applies what changes nothing in the levels: display, overlays, camera, controls, labels, colours. */
   private applyDisplay(applyView = false): void {
     const want = this.readState();
     this.controlBar.setMode(want.controls);
     const viewer = this.viewer;
     const label = want.alt || this.describe();
-    this.stage.setAttribute('aria-label', label);
+    this.chrome.setLabel(label);
     if (!viewer) return;
-    this.reportProblems(want.problems);
-    if (!want.src && viewer.state.levelCount === 0) this.placeholder.textContent = 'No model: set the src attribute.';
+    this.sync.reportProblems(want.problems);
+    if (!want.src && viewer.state.levelCount === 0) this.chrome.setPlaceholder('No model: set the src attribute.');
     if (viewer.state.renderMode !== want.renderMode) viewer.setRenderMode(want.renderMode);
     for (const name of ['control', 'curves', 'bbox'] as OverlayName[]) {
       if (viewer.state.overlays[name] !== want.overlays[name]) viewer.setOverlay(name, want.overlays[name]);
@@ -468,13 +305,13 @@ export class SubdivViewerElement extends ViewerAttributes {
 
   private onState(state: ViewerState): void {
     this.controlBar.update(state);
-    this.placeholder.hidden = state.levelCount > 0 || !this.message.hidden;
-    const busy = state.busy !== null || this.download !== null;
-    const kind = state.busy?.kind ?? (this.download ? 'load' : null);
-    const label = state.busy?.label ?? (this.download ? `Downloading ${this.download.name}…` : '');
-    this.busyBox.hidden = !busy;
-    this.busyLabel.textContent = label;
-    if (!this.getAttribute('alt')) this.stage.setAttribute('aria-label', this.describe());
+    if (state.levelCount > 0) this.chrome.setPlaceholder(null);
+    const downloading = this.sync.downloading;
+    const busy = state.busy !== null || downloading !== null;
+    const kind = state.busy?.kind ?? (downloading ? 'load' : null);
+    const label = state.busy?.label ?? (downloading ? `Downloading ${downloading}…` : '');
+    this.chrome.setBusy(busy ? label : null);
+    if (!this.getAttribute('alt')) this.chrome.setLabel(this.describe());
     const prev = this.last;
     this.last = { level: state.level, facts: state.facts, busy, scheme: state.scheme };
     if (!prev || prev.busy !== busy) {
@@ -482,7 +319,7 @@ export class SubdivViewerElement extends ViewerAttributes {
     }
     const changed = !prev || prev.level !== state.level || prev.facts !== state.facts || prev.scheme !== state.scheme;
     if (state.facts && changed) {
-      this.status.textContent = `Level ${state.level}: ${faceTypes(state.facts)}, genus ${state.facts.genus}`;
+      this.chrome.announce(`Level ${state.level}: ${faceTypes(state.facts)}, genus ${state.facts.genus}`);
       this.dispatch('level-change', {
         level: state.level,
         levelCount: state.levelCount,
@@ -528,17 +365,17 @@ export class SubdivViewerElement extends ViewerAttributes {
 
   private fail(source: string, error: unknown): void {
     if (error instanceof CancelledError) return;
-    this.passFailures++;
+    this.sync.noteFailure();
     const detail = errorDetail(source, error);
     const { line, message } = detail;
-    this.message.textContent = `${detail.source}: ${line > 0 && !/\bline \d/.test(message) ? `line ${line}: ` : ''}${message}`;
-    this.message.hidden = false;
-    this.placeholder.hidden = true;
+    this.chrome.showMessage(
+      `${detail.source}: ${line > 0 && !/\bline \d/.test(message) ? `line ${line}: ` : ''}${message}`,
+    );
     this.dispatch('error', detail);
   }
 
   private hideMessage(): void {
-    this.message.hidden = true;
+    this.chrome.hideMessage();
   }
 
   private dispatch(type: string, detail: unknown): void {

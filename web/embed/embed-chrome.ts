@@ -1,0 +1,68 @@
+/**
+ * What `<subdiv-viewer>` shows around the picture, in its shadow root: the
+ * stage the viewer draws into, a placeholder before the model, the message
+ * of the last failure, the busy box with Cancel, a live region for screen
+ * readers, and the control bar below.
+ */
+import { el } from '../ui/dom';
+import type { EmbedControls } from './embed-controls';
+import { EMBED_CSS } from './embed-styles';
+
+export class EmbedChrome {
+  /** The viewer's container. */
+  readonly stage: HTMLElement;
+  private readonly placeholder: HTMLElement;
+  private readonly message: HTMLElement;
+  private readonly status: HTMLElement;
+  private readonly busyBox: HTMLElement;
+  private readonly busyLabel: HTMLElement;
+
+  constructor(root: ShadowRoot, controls: EmbedControls, onCancel: () => void) {
+    const style = document.createElement('style');
+    style.textContent = EMBED_CSS;
+    this.stage = el('div', { className: 'stage', attrs: { part: 'stage', role: 'region' } });
+    this.placeholder = el('div', { className: 'placeholder', text: 'Loading…' });
+    this.message = el('div', { className: 'message', attrs: { part: 'message', role: 'alert' } });
+    this.message.hidden = true;
+    this.status = el('div', { className: 'status', attrs: { role: 'status', 'aria-live': 'polite' } });
+    this.busyLabel = el('span');
+    const cancel = el('button', { text: 'Cancel', attrs: { type: 'button', part: 'cancel' } });
+    cancel.addEventListener('click', onCancel);
+    this.busyBox = el('div', { className: 'busy', attrs: { part: 'progress' } }, this.busyLabel, cancel);
+    this.busyBox.hidden = true;
+    this.stage.append(this.placeholder, this.message, this.busyBox, this.status);
+    root.append(style, el('div', { className: 'frame' }, this.stage, controls.element));
+  }
+
+  /** The stage's accessible name. */
+  setLabel(label: string): void {
+    this.stage.setAttribute('aria-label', label);
+  }
+
+  /** Shows the placeholder with `text` (while no message is shown), or hides it (null). */
+  setPlaceholder(text: string | null): void {
+    if (text !== null) this.placeholder.textContent = text;
+    this.placeholder.hidden = text === null || !this.message.hidden;
+  }
+
+  showMessage(text: string): void {
+    this.message.textContent = text;
+    this.message.hidden = false;
+    this.placeholder.hidden = true;
+  }
+
+  hideMessage(): void {
+    this.message.hidden = true;
+  }
+
+  /** The busy box with `label` and Cancel, or none (null). */
+  setBusy(label: string | null): void {
+    this.busyBox.hidden = label === null;
+    this.busyLabel.textContent = label ?? '';
+  }
+
+  /** Says `text` to screen readers (a polite live region). */
+  announce(text: string): void {
+    this.status.textContent = text;
+  }
+}
