@@ -567,3 +567,101 @@ test.describe('what pages do to an element', () => {
     });
   });
 });
+
+test.describe('what pages do to an element, continued', () => {
+  test.use({ allowedConsoleErrors: [/404/] });
+
+  test('load() then a scheme change; a failed src stays failed; a display attribute put right; cancel holds; removal; setLevel(NaN)', async ({
+    embed,
+    page,
+  }) => {
+    const TETRA = 'OFF\n4 4 0\n1 1 1\n-1 -1 1\n-1 1 -1\n1 -1 -1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n';
+    await page.route('**/missing.off', (route) => route.fulfill({ status: 404, body: 'Not found' }));
+    await embed.serve(
+      'e2e/more.html',
+      `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>More</title>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+<style>subdiv-viewer{width:300px;height:200px;display:inline-block}</style></head><body>
+<subdiv-viewer id="a" src="../meshes/cube.off"></subdiv-viewer>
+<subdiv-viewer id="b" src="../meshes/cube.off"></subdiv-viewer>
+<subdiv-viewer id="c" src="../meshes/cgal/bunny00.off" scheme="loop"></subdiv-viewer>
+</body></html>`,
+    );
+    await page.goto('./e2e/more.html');
+    await embed.waitForLevel('a', 0);
+    await embed.waitForLevel('b', 0);
+    type Viewer = HTMLElementTagNameMap['subdiv-viewer'];
+    const on = (id: string) => page.locator(`#${id}`);
+    const message = (id: string) => on(id).locator('.message');
+
+    await test.step('load() followed at once by a scheme change: the loaded mesh, in the new scheme', async () => {
+      await on('a').evaluate(async (e, text) => {
+        const v = e as Viewer;
+        const shown = v.load(text, 'tetra.off');
+        v.scheme = 'sqrt3';
+        v.levels = 1;
+        await shown;
+      }, TETRA);
+      const reading = await embed.waitForLevel('a', 1);
+      expect(reading.facts).toMatchObject({ ...expectedClosedCounts('sqrt3', MESHES.tetrahedron, 1) });
+      expect((await embed.events('load', 'a')).map((e) => e.detail.modelName)).toEqual(['cube.off', 'tetra.off']);
+    });
+
+    await test.step('a src that failed stays failed: its message stays through other changes', async () => {
+      await on('b').evaluate((e) => e.setAttribute('src', '../meshes/missing.off'));
+      await expect(message('b')).toContainText('404');
+      await on('b').evaluate((e) => {
+        (e as Viewer).scheme = 'doo-sabin';
+        (e as Viewer).levels = 1;
+      });
+      await page.waitForTimeout(500);
+      await expect(message('b')).toContainText('404');
+      expect((await embed.reading('b')).level).toBe(0);
+      expect(await embed.events('error', 'b')).toHaveLength(1);
+      await on('b').evaluate((e) => e.setAttribute('src', '../meshes/octahedron.off'));
+      const reading = await embed.waitForLevel('b', 1);
+      expect(reading.facts).toMatchObject({ ...expectedClosedCounts('doo-sabin', MESHES.octahedron, 1) });
+      await expect(message('b')).toBeHidden();
+    });
+
+    await test.step('a bad display attribute put right clears its message', async () => {
+      await on('b').evaluate((e) => e.setAttribute('render-mode', 'glossy'));
+      await expect(message('b')).toContainText('Unknown render mode "glossy"');
+      await on('b').evaluate((e) => e.setAttribute('render-mode', 'edges'));
+      await expect(message('b')).toBeHidden();
+    });
+
+    await test.step('cancel() holds over a level asked just before it', async () => {
+      await embed.waitForLevel('c', 0);
+      const level = await on('c').evaluate(async (e) => {
+        const v = e as Viewer;
+        v.levels = 1;
+        await new Promise((r) => setTimeout(r, 30));
+        v.levels = 2;
+        v.cancel();
+        await new Promise((r) => setTimeout(r, 1500));
+        return v.level;
+      });
+      expect(level).toBe(0);
+      expect((await embed.events('level-change', 'c')).map((e) => e.detail.level)).toEqual([0]);
+    });
+
+    await test.step('setLevel(NaN) is refused; a removed element does not come back', async () => {
+      const refused = await on('a').evaluate((e) =>
+        (e as Viewer).setLevel(Number.NaN).then(
+          () => 'ok',
+          (error: Error) => error.name,
+        ),
+      );
+      expect(refused).toBe('TypeError');
+      const loadsBefore = (await embed.events('load', 'a')).length;
+      await on('a').evaluate(async (e) => {
+        e.remove();
+        await new Promise((r) => setTimeout(r, 50));
+        await (e as Viewer).reload();
+      });
+      await page.waitForTimeout(1000);
+      expect(await embed.events('load', 'a')).toHaveLength(loadsBefore);
+    });
+  });
+});

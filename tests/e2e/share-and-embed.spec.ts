@@ -213,6 +213,23 @@ test('reload keeps the state; Back after a level step returns to the previous le
   });
 });
 
+test('triangulate travels in the link, and Back to a link without it turns it off', async ({ app }) => {
+  await app.open('#src=meshes/cube.off&scheme=catmull-clark&levels=1');
+  await atLevel(app, 1);
+  await app.page.evaluate(() => {
+    window.location.hash = '#src=meshes/cube.off&scheme=loop&levels=1&triangulate=1';
+  });
+  const loop = await atLevel(app, 1);
+  expect(loop).toMatchObject({ scheme: 'loop', triangulate: true });
+  expect(countsOf(loop)).toEqual(expectedClosedCounts('loop', { vertices: 8, edges: 18, faces: 12 }, 1));
+  await app.page.goBack();
+  await expect.poll(async () => (await app.state()).scheme).toBe('catmull-clark');
+  const back = await atLevel(app, 1);
+  expect(back.triangulate).toBe(false);
+  expect(countsOf(back)).toEqual(expectedClosedCounts('catmull-clark', CUBE, 1));
+  expect((await app.hashParams()).has('triangulate')).toBe(false);
+});
+
 test('a bad value in the hash is named in a notice; the rest of the link applies', async ({ app }) => {
   await app.open('#src=meshes/cube.off&scheme=nonsense&levels=1&mode=sparkly&control-mesh=1&view=1,2,3');
   const state = await atLevel(app, 1);

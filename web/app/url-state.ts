@@ -186,7 +186,8 @@ export class UrlState {
       }
       const scheme = params.scheme ?? DEFAULT_SCHEME;
       if (viewer.state.scheme !== scheme) host.setScheme(scheme);
-      if (params.triangulate !== undefined) viewer.setTriangulate(params.triangulate);
+      // A link without the key was made without triangulation (it is written only when on).
+      viewer.setTriangulate(params.triangulate ?? false);
       if (haveModel) await this.stepTo(params.levels ?? 0, stale);
       if (stale()) return;
       viewer.setRenderMode(params.renderMode ?? DEFAULT_RENDER_MODE);

@@ -110,13 +110,19 @@ export class SubdivViewerElement extends ViewerAttributes {
   }
 
   disconnectedCallback(): void {
-    // Moving the element in the page disconnects and connects it in one task: dispose only if it stays out.
+    this.teardownIfOut();
+  }
+
+  /** Moving the element in the page disconnects and connects it in one task: tear down only if it stays out. */
+  private teardownIfOut(): void {
     queueMicrotask(() => {
-      if (this.isConnected) return;
+      if (this.isConnected || !this.viewer) return;
       for (const stop of this.unwatch.splice(0)) stop();
       this.sync.reset();
-      this.viewer?.dispose();
+      this.viewer.dispose();
       this.viewer = null;
+      // A page's spinner waits for the end of what was under way.
+      if (this.last?.busy) this.dispatch('progress', { busy: false, kind: null, label: '' } as ProgressDetail);
       this.last = null;
       this.gpuReleasedFlag = false;
     });
@@ -128,12 +134,14 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.applyDisplay(name === 'view');
       return;
     }
-    if (name === 'src') this.sync.srcChanged();
+    if (name === 'src' || name === 'rules') this.sync.sourceChanged();
+    // A model of the old src still being read is not wanted any more.
+    if (name === 'src' && this.viewer?.state.busy?.kind === 'load') this.viewer.cancel();
     // A change that makes the running step useless stops it; the levels computed so far stay.
     const running = this.sync.runningLevels;
     const stepping = this.viewer?.state.busy?.kind === 'subdivide';
     if (running !== null && stepping && (name !== 'levels' || this.readState().levels < running)) this.viewer?.cancel();
-    void this.sync.run();
+    void this.sync.request();
   }
 
   /** The shown level (−1 before a model is loaded). */
@@ -170,35 +178,30 @@ export class SubdivViewerElement extends ViewerAttributes {
    * with the level shown, lower than `n` when a step failed or was cancelled.
    */
   async setLevel(n: number): Promise<number> {
+    if (typeof n !== 'number' || !Number.isFinite(n)) throw new TypeError(`setLevel needs a number, not ${n}.`);
     this.levels = Math.max(0, Math.min(MAX_PARAM_LEVELS, Math.round(n)));
     // The attribute's change started a pass if it changed; otherwise start one (a level that failed before).
     await this.sync.current();
     return this.level;
   }
 
-  /** Shows a mesh from a File, or from OFF/OBJ text named `name`, in place of `src`'s. */
-  async load(input: File | string, name = 'mesh.off'): Promise<void> {
-    const viewer = this.start();
-    const fileName = input instanceof File ? input.name : name;
-    // A src download still running is stopped (or dropped, if it arrives all the same).
-    this.sync.replaceModel(this.src);
-    try {
-      const mesh = input instanceof File ? await readFile(input) : meshText(name, input);
-      await viewer.loadText(mesh.text, mesh.format, mesh.name);
-      this.hideMessage();
-      this.dispatch('load', { modelName: mesh.name, facts: viewer.state.facts } as LoadDetail);
-    } catch (error) {
-      this.fail(fileName, error);
-      throw error;
-    }
-    await this.sync.run();
+  /**
+   * Shows a mesh from a File, or from OFF/OBJ text named `name`, in place of
+   * `src`'s; the last call wins. Resolves once it is shown, or when it was
+   * superseded (another load(), cancel(), removal); rejects with the reason
+   * it could not be read.
+   */
+  load(input: File | string, name = 'mesh.off'): Promise<void> {
+    this.start();
+    const read = input instanceof File ? () => readFile(input) : async () => meshText(name, input);
+    return this.sync.load(read, input instanceof File ? input.name : name, this.src);
   }
 
   /** Loads `src` again (after load(), or when the file behind the URL changed). */
   reload(): Promise<void> {
     this.sync.forgetSrc();
     this.start();
-    return this.sync.run();
+    return this.sync.request();
   }
 
   /** PNG of the view at `scale` × its size. */
@@ -228,12 +231,15 @@ export class SubdivViewerElement extends ViewerAttributes {
   cancel(): void {
     this.sync.cancel();
     this.viewer?.cancel();
+    if (this.level < 0) this.chrome.setPlaceholder('Loading stopped.');
   }
 
   // --- Inside ------------------------------------------------------------------------------
 
   private start(): SubdivViewer {
     if (this.viewer) return this.viewer;
+    // Started outside the page (a method called on a removed element): torn down again unless it is put back.
+    if (!this.isConnected) this.teardownIfOut();
     const initial = this.readState();
     const viewer = new SubdivViewer(this.chrome.stage, {
       scheme: initial.scheme,
@@ -265,7 +271,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       ),
     );
     this.applyDisplay();
-    void this.sync.run();
+    void this.sync.request();
     return viewer;
   }
 
@@ -284,14 +290,15 @@ export class SubdivViewerElement extends ViewerAttributes {
     const label = want.alt || this.describe();
     this.chrome.setLabel(label);
     if (!viewer) return;
-    this.sync.reportProblems(want.problems);
+    // A bad display attribute put right: a pass clears its message if nothing else is wrong.
+    if (this.sync.reportProblems(want.problems)) void this.sync.run();
     if (!want.src && viewer.state.levelCount === 0) this.chrome.setPlaceholder('No model: set the src attribute.');
     if (viewer.state.renderMode !== want.renderMode) viewer.setRenderMode(want.renderMode);
     for (const name of ['control', 'curves', 'bbox'] as OverlayName[]) {
       if (viewer.state.overlays[name] !== want.overlays[name]) viewer.setOverlay(name, want.overlays[name]);
     }
     const background = want.background ?? (this.darkQuery.matches ? '#1f2328' : null);
-    viewer.view.setBackground(background === 'transparent' ? null : (background ?? '#f3f4f6'));
+    viewer.view.setBackground(background === 'transparent' ? null : (background ?? '#f3f4f6'), this.darkQuery.matches);
     if (applyView && want.view && viewer.state.levelCount > 0) viewer.setView(want.view);
   }
 
@@ -372,10 +379,6 @@ export class SubdivViewerElement extends ViewerAttributes {
       `${detail.source}: ${line > 0 && !/\bline \d/.test(message) ? `line ${line}: ` : ''}${message}`,
     );
     this.dispatch('error', detail);
-  }
-
-  private hideMessage(): void {
-    this.chrome.hideMessage();
   }
 
   private dispatch(type: string, detail: unknown): void {

@@ -296,11 +296,14 @@ export class SceneView {
     return this.renderer.memory();
   }
 
-  /** The colour behind the model (a CSS colour; null: transparent). */
-  setBackground(color: string | null): void {
+  /**
+   * The colour behind the model (a CSS colour; null: transparent, over a
+   * page that is dark when `darkBehind`).
+   */
+  setBackground(color: string | null, darkBehind = false): void {
     this.background = color;
     // Polygon edges stay visible on a dark background.
-    const dark = color !== null && new Color(color).getHSL({ h: 0, s: 0, l: 0 }).l < 0.35;
+    const dark = color === null ? darkBehind : new Color(color).getHSL({ h: 0, s: 0, l: 0 }).l < 0.35;
     (this.edgeLines.material as LineBasicMaterial).color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
     this.dirty = true;
   }

@@ -125,7 +125,8 @@ async function download(src: string, base: string, maxBytes: number, signal?: Ab
   return meshText(name, text);
 }
 
-async function readLimited(response: Response, maxBytes: number, src: string): Promise<string> {
+/** The body of `response` as text, refused (LoadError about `src`) as soon as more than `maxBytes` arrived. */
+export async function readLimited(response: Response, maxBytes: number, src: string): Promise<string> {
   if (!response.body) return response.text();
   const reader = response.body.getReader();
   const chunks: Uint8Array[] = [];
