@@ -12,18 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "bench_report.h"
 #include "core/mesh_io.h"
 #include "core/subdivide.h"
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace subdivlab;
@@ -76,13 +67,7 @@ int main(int argc, char** argv) {
         times.push_back(
             std::chrono::duration<double, std::milli>(stop - start).count());
     }
-    std::printf(
-        "{\"scheme\":\"%s\",\"faces\":%zu,\"median_ms\":%.3f,\"runs_ms\":[",
-        scheme.c_str(), faces, median(times));
-    for (std::size_t i = 0; i < times.size(); ++i)
-      std::printf("%s%.3f", i ? "," : "", times[i]);
-    std::printf("]}\n");
-    std::fflush(stdout);
+    subdivlab_bench::print_result(scheme, faces, times);
   }
   return 0;
 }

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_report.h"
 #include "core/mesh_io.h"
 
 namespace {
@@ -36,12 +37,6 @@ struct Point {
     z += w * p.z;
   }
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 /** Refines `levels` times and returns the number of faces of the last level. */
 std::size_t refine(const subdivlab::Mesh_buffers& mesh, Sdc::SchemeType type,
@@ -60,6 +55,9 @@ std::size_t refine(const subdivlab::Mesh_buffers& mesh, Sdc::SchemeType type,
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
       Factory::Create(desc, Factory::Options(type, sdc)));
+  // Refused topology (e.g. Loop on polygons other than triangles): nothing to
+  // time.
+  if (!refiner) return 0;
   refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
 
   std::vector<Point> points(refiner->GetNumVerticesTotal());
@@ -111,18 +109,17 @@ int main(int argc, char** argv) {
     for (int r = 0; r <= runs; ++r) {
       const auto start = std::chrono::steady_clock::now();
       faces = refine(mesh.value, type, levels);
+      if (faces == 0) {
+        std::cerr << "error: OpenSubdiv refused the mesh for " << scheme
+                  << " (Loop needs triangles)\n";
+        return 1;
+      }
       const auto stop = std::chrono::steady_clock::now();
       if (r > 0)
         times.push_back(
             std::chrono::duration<double, std::milli>(stop - start).count());
     }
-    std::printf(
-        "{\"scheme\":\"%s\",\"faces\":%zu,\"median_ms\":%.3f,\"runs_ms\":[",
-        scheme.c_str(), faces, median(times));
-    for (std::size_t k = 0; k < times.size(); ++k)
-      std::printf("%s%.3f", k ? "," : "", times[k]);
-    std::printf("]}\n");
-    std::fflush(stdout);
+    subdivlab_bench::print_result(scheme, faces, times);
   }
   return 0;
 }

@@ -25,23 +25,7 @@ import { EmbedControls } from './embed-controls';
 import { whenFar, whenNear } from './embed-distance';
 import { errorDetail, type LevelChangeDetail, type LoadDetail, type ProgressDetail } from './embed-events';
 import { EmbedSync } from './embed-sync';
-import { ViewerAttributes } from './viewer-attributes';
-
-export const OBSERVED_ATTRIBUTES = [
-  'src',
-  'scheme',
-  'levels',
-  'render-mode',
-  'control-mesh',
-  'control-edges',
-  'bbox',
-  'triangulate',
-  'rules',
-  'view',
-  'controls',
-  'alt',
-  'background',
-] as const;
+import { OBSERVED_ATTRIBUTES, ViewerAttributes } from './viewer-attributes';
 
 /** Attributes applied without touching the model or its levels. */
 const DISPLAY_ATTRIBUTES = new Set([

@@ -9,22 +9,25 @@ import type { RenderMode } from '../render/render-mode';
 import type { ControlsMode } from '../viewer/viewer-params';
 import { type EmbedState, readEmbedState } from './embed-state';
 
-/** The reflected properties, for {@link ViewerAttributes.upgradeProperties}. */
-const PROPERTY_NAMES = [
-  'src',
-  'scheme',
-  'levels',
-  'renderMode',
-  'controlMesh',
-  'controlEdges',
-  'bbox',
-  'triangulate',
-  'rules',
-  'view',
-  'controls',
-  'alt',
-  'background',
-] as const;
+/** Every attribute of the element and the property that reflects it. */
+const PROPERTIES = {
+  src: 'src',
+  scheme: 'scheme',
+  levels: 'levels',
+  'render-mode': 'renderMode',
+  'control-mesh': 'controlMesh',
+  'control-edges': 'controlEdges',
+  bbox: 'bbox',
+  triangulate: 'triangulate',
+  rules: 'rules',
+  view: 'view',
+  controls: 'controls',
+  alt: 'alt',
+  background: 'background',
+} as const;
+
+/** The attributes the element observes. */
+export const OBSERVED_ATTRIBUTES = Object.keys(PROPERTIES) as (keyof typeof PROPERTIES)[];
 
 export class ViewerAttributes extends HTMLElement {
   get src(): string {
@@ -112,7 +115,7 @@ export class ViewerAttributes extends HTMLElement {
    * were stored on the plain element and would hide these accessors).
    */
   protected upgradeProperties(): void {
-    for (const name of PROPERTY_NAMES) {
+    for (const name of Object.values(PROPERTIES)) {
       if (!Object.hasOwn(this, name)) continue;
       const value = (this as unknown as Record<string, unknown>)[name];
       delete (this as unknown as Record<string, unknown>)[name];

@@ -93,7 +93,8 @@ export async function fetchMesh(
   }
 }
 
-async function download(src: string, base: string, maxBytes: number, signal?: AbortSignal): Promise<MeshText> {
+/** `src` resolved against `base`; refuses (LoadError) what is not a valid http or https URL. */
+export function httpUrl(src: string, base: string): URL {
   let url: URL;
   try {
     url = new URL(src, base);
@@ -103,6 +104,11 @@ async function download(src: string, base: string, maxBytes: number, signal?: Ab
   if (url.protocol !== 'http:' && url.protocol !== 'https:') {
     throw new LoadError(src, `Only http and https URLs can be loaded, not ${url.protocol}`);
   }
+  return url;
+}
+
+async function download(src: string, base: string, maxBytes: number, signal?: AbortSignal): Promise<MeshText> {
+  const url = httpUrl(src, base);
   const name = nameFromUrl(url);
   let response: Response;
   try {

@@ -1,7 +1,7 @@
 /** Rule sets from a URL (the element's `rules` attribute), read as the rules panel reads a file. */
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
 import { CancelledError } from '../core/worker-client';
-import { LoadError, readLimited } from './mesh-source';
+import { httpUrl, LoadError, readLimited } from './mesh-source';
 
 /** Largest rule file read from a URL (the shipped ones are about 1 kB). */
 export const MAX_RULES_BYTES = 256 * 1024;
@@ -21,15 +21,7 @@ export async function fetchRuleSet(url: string, base: string, signal?: AbortSign
 }
 
 async function download(url: string, base: string, signal?: AbortSignal): Promise<RuleSet> {
-  let resolved: URL;
-  try {
-    resolved = new URL(url, base);
-  } catch {
-    throw new LoadError(url, 'This is not a valid URL.');
-  }
-  if (resolved.protocol !== 'http:' && resolved.protocol !== 'https:') {
-    throw new LoadError(url, `Only http and https URLs can be loaded, not ${resolved.protocol}`);
-  }
+  const resolved = httpUrl(url, base);
   let response: Response;
   try {
     response = await fetch(resolved, { credentials: 'omit', signal });
