@@ -82,8 +82,6 @@ export class WorkerClient {
   private readonly module: Promise<WebAssembly.Module | null>;
   private schemes: Promise<string[]>;
   private disposed = false;
-  /** Workers started so far (a cancel of a running request starts another). */
-  workersStarted = 0;
 
   /**
    * @param factory makes a worker (tests pass their own).
@@ -107,11 +105,6 @@ export class WorkerClient {
   /** Resolves with the core's scheme names once the WASM module is loaded. */
   ready(): Promise<string[]> {
     return this.schemes;
-  }
-
-  /** Requests running or queued, of all sessions. */
-  get pendingCount(): number {
-    return this.queue.length + (this.running ? 1 : 0);
   }
 
   /** Terminates the worker; every pending request rejects with CancelledError. */
@@ -200,7 +193,6 @@ export class WorkerClient {
   private ensureWorker(): Worker {
     if (this.worker) return this.worker;
     const worker = this.factory();
-    this.workersStarted++;
     worker.onmessage = (event: MessageEvent<WorkerResponseMessage>) => {
       if (this.running && event.data.id === this.running.id) this.settle(this.running, event.data);
     };
@@ -209,8 +201,11 @@ export class WorkerClient {
       event.preventDefault();
       const message = event.message || 'The SubdivLab core worker failed to start.';
       worker.terminate();
-      if (this.worker === worker) this.worker = null;
+      if (this.worker !== worker) return;
+      this.worker = null;
       const running = this.running;
+      // The next worker loads the core first (from the page's compiled module), as after a cancel.
+      if (running?.kind !== 'init') this.schemes = this.startInit();
       if (running)
         this.settle(running, { id: running.id, ok: false, error: { code: 'internal_error', message, line: 0 } });
     };
