@@ -6,15 +6,20 @@ const page = (path: string) => fileURLToPath(new URL(path, import.meta.url));
 /**
  * In the dev server, embed/subdiv-viewer.js (the built element's name, as
  * public/examples/ and the Embed dialog's snippets write it) is the module's
- * source; `vite build -c vite.embed.config.ts` makes the real file.
+ * source; `vite build -c vite.embed.config.ts` makes the real file. And
+ * examples/ is its index page, as a static host serves it (the dev server
+ * would answer with the app).
  */
 function embedModuleInDev(): Plugin {
   return {
     name: 'subdivlab-embed-module-in-dev',
     configureServer(server) {
       server.middlewares.use((request, _response, next) => {
-        if (request.url?.startsWith('/embed/subdiv-viewer.js')) {
-          request.url = request.url.replace('/embed/subdiv-viewer.js', '/embed/subdiv-viewer.ts');
+        const url = request.url ?? '';
+        if (url.startsWith('/embed/subdiv-viewer.js')) {
+          request.url = url.replace('/embed/subdiv-viewer.js', '/embed/subdiv-viewer.ts');
+        } else if (/^\/examples\/?(\?|$)/.test(url)) {
+          request.url = url.replace(/^\/examples\/?/, '/examples/index.html');
         }
         next();
       });
