@@ -27,6 +27,7 @@ import { SchemePanel } from '../ui/scheme-panel';
 import { SharePanel } from '../ui/share-panel';
 import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
 import { handleViewKey } from '../ui/view-keys';
+import { messageOf } from '../viewer/error-message';
 import { formatBytes } from '../viewer/memory-budget';
 import { fetchMesh, LoadError, type MeshText, readFile } from '../viewer/mesh-source';
 import { checkRulesInCore } from '../viewer/rules-check';
@@ -400,14 +401,4 @@ export class AppShell {
     this.exports.update(state);
     this.progress.update(state.busy);
   }
-}
-
-/** The user-facing sentence of an error; the core's line number is added when the message lacks it. */
-export function messageOf(error: unknown): string {
-  if (error instanceof SubdivError) {
-    const hasLine = error.line > 0 && !/\bline\s+\d/i.test(error.message);
-    return hasLine ? `line ${error.line}: ${error.message}` : error.message;
-  }
-  if (error instanceof Error) return error.message;
-  return String(error);
 }

@@ -15,7 +15,7 @@ import type { SchemeName } from '../core/mesh';
 import { RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { checkedView, parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
-import { MAX_PARAM_LEVELS } from '../viewer/viewer-params';
+import { MAX_PARAM_LEVELS, OVERLAY_KEYS } from '../viewer/viewer-params';
 
 export type EmbedCommand =
   | { subdivlab: 'load'; src: string }
@@ -28,9 +28,9 @@ export type EmbedCommand =
   | { subdivlab: 'set-overlay'; overlay: OverlayAttribute; on: boolean }
   | { subdivlab: 'set-triangulate'; on: boolean };
 
-/** The overlays a command may switch, by their attribute names. */
-export const OVERLAY_ATTRIBUTES = ['control-mesh', 'control-edges', 'bbox'] as const;
-export type OverlayAttribute = (typeof OVERLAY_ATTRIBUTES)[number];
+/** The overlays a command may switch, by their attribute names (as links write them). */
+const OVERLAY_ATTRIBUTES: readonly string[] = Object.values(OVERLAY_KEYS);
+export type OverlayAttribute = (typeof OVERLAY_KEYS)[keyof typeof OVERLAY_KEYS];
 
 export type EmbedEventName = 'ready' | 'load' | 'level-change' | 'error' | 'progress';
 
@@ -85,7 +85,11 @@ export function checkCommand(data: unknown): Checked {
       return { ok: false, reason: `set-render-mode: unknown mode ${JSON.stringify(data.mode)}` };
     }
     case 'set-overlay':
-      if ((OVERLAY_ATTRIBUTES as readonly unknown[]).includes(data.overlay) && typeof data.on === 'boolean') {
+      if (
+        typeof data.overlay === 'string' &&
+        OVERLAY_ATTRIBUTES.includes(data.overlay) &&
+        typeof data.on === 'boolean'
+      ) {
         return {
           ok: true,
           command: { subdivlab: 'set-overlay', overlay: data.overlay as OverlayAttribute, on: data.on },

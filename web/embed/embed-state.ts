@@ -7,7 +7,14 @@ import type { SchemeName } from '../core/mesh';
 import { RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
-import { CONTROLS_MODES, type ControlsMode, MAX_PARAM_LEVELS, parseFlag, parseLevels } from '../viewer/viewer-params';
+import {
+  CONTROLS_MODES,
+  type ControlsMode,
+  MAX_PARAM_LEVELS,
+  OVERLAY_KEYS,
+  parseFlag,
+  parseLevels,
+} from '../viewer/viewer-params';
 
 export interface EmbedState {
   src: string;
@@ -99,7 +106,11 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     scheme,
     levels,
     renderMode,
-    overlays: { control: flag('control-mesh'), curves: flag('control-edges'), bbox: flag('bbox') },
+    overlays: {
+      control: flag(OVERLAY_KEYS.control),
+      curves: flag(OVERLAY_KEYS.curves),
+      bbox: flag(OVERLAY_KEYS.bbox),
+    },
     triangulate: flag('triangulate'),
     rules,
     view,

@@ -10,16 +10,18 @@
 import type { MeshFacts, SchemeName } from '../core/mesh';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
-import { nextRenderMode, type OverlayName } from '../render/render-mode';
+import { nextRenderMode, OVERLAY_NAMES } from '../render/render-mode';
+import { VIEW_COLORS } from '../render/scene-view';
 import { checkedView, parseViewString, type ViewState } from '../render/view-state';
 import { faceTypes } from '../ui/facts-panel';
 import { installShortcuts } from '../ui/shortcuts';
 import { handleViewKey } from '../ui/view-keys';
+import { messageOf } from '../viewer/error-message';
 import { formatBytes } from '../viewer/memory-budget';
 import { meshText, readFile } from '../viewer/mesh-source';
 import { schemeInfo } from '../viewer/scheme-info';
 import { SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
-import { MAX_PARAM_LEVELS } from '../viewer/viewer-params';
+import { MAX_PARAM_LEVELS, OVERLAY_KEYS } from '../viewer/viewer-params';
 import { EmbedChrome } from './embed-chrome';
 import { EmbedControls } from './embed-controls';
 import { whenFar, whenNear } from './embed-distance';
@@ -77,7 +79,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       renderMode: (mode) => {
         this.renderMode = mode;
       },
-      overlay: (name, on) => this.setFlag(name === 'control' ? 'control-mesh' : 'control-edges', on),
+      overlay: (name, on) => this.setFlag(OVERLAY_KEYS[name], on),
       fit: () => this.viewer?.fitView(),
     });
     this.chrome = new EmbedChrome(this.attachShadow({ mode: 'open' }), this.controlBar, () => this.cancel());
@@ -278,11 +280,12 @@ export class SubdivViewerElement extends ViewerAttributes {
     if (this.sync.reportProblems(want.problems)) void this.sync.run();
     if (!want.src && viewer.state.levelCount === 0) this.chrome.setPlaceholder('No model: set the src attribute.');
     if (viewer.state.renderMode !== want.renderMode) viewer.setRenderMode(want.renderMode);
-    for (const name of ['control', 'curves', 'bbox'] as OverlayName[]) {
+    for (const name of OVERLAY_NAMES) {
       if (viewer.state.overlays[name] !== want.overlays[name]) viewer.setOverlay(name, want.overlays[name]);
     }
-    const background = want.background ?? (this.darkQuery.matches ? '#1f2328' : null);
-    viewer.view.setBackground(background === 'transparent' ? null : (background ?? '#f3f4f6'), this.darkQuery.matches);
+    const dark = this.darkQuery.matches;
+    const background = want.background ?? (dark ? VIEW_COLORS.backgroundDark : VIEW_COLORS.background);
+    viewer.view.setBackground(background === 'transparent' ? null : background, dark);
     if (applyView && want.view && viewer.state.levelCount > 0) viewer.setView(want.view);
   }
 
@@ -327,7 +330,6 @@ export class SubdivViewerElement extends ViewerAttributes {
       const target = event.composedPath()[0];
       if (this.viewer && !(target instanceof HTMLSelectElement) && handleViewKey(this.viewer.view, event)) return;
     });
-    const toggles: Record<OverlayName, string> = { control: 'control-mesh', curves: 'control-edges', bbox: 'bbox' };
     installShortcuts(
       this,
       {
@@ -336,7 +338,7 @@ export class SubdivViewerElement extends ViewerAttributes {
         cycleRenderMode: () => {
           this.renderMode = nextRenderMode(this.renderMode);
         },
-        toggleOverlay: (name) => this.setFlag(toggles[name], !this.readState().overlays[name]),
+        toggleOverlay: (name) => this.setFlag(OVERLAY_KEYS[name], !this.readState().overlays[name]),
         fit: () => this.viewer?.fitView(),
         cancel: () => this.cancel(),
         copyImage: () => void this.copyImage(),
@@ -358,10 +360,7 @@ export class SubdivViewerElement extends ViewerAttributes {
     if (error instanceof CancelledError) return;
     this.sync.noteFailure();
     const detail = errorDetail(source, error);
-    const { line, message } = detail;
-    this.chrome.showMessage(
-      `${detail.source}: ${line > 0 && !/\bline \d/.test(message) ? `line ${line}: ` : ''}${message}`,
-    );
+    this.chrome.showMessage(`${detail.source}: ${messageOf(error)}`);
     this.dispatch('error', detail);
   }
 

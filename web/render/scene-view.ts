@@ -32,6 +32,8 @@ import type { ViewState } from './view-state';
 /** Colours shared by the WebGL view and the SVG export. */
 export const VIEW_COLORS = {
   background: '#f3f4f6',
+  /** Behind the model when the page prefers a dark scheme (the element's default there). */
+  backgroundDark: '#1f2328',
   surface: '#8db4dc',
   edges: '#1f2d3d',
   edgesOnDark: '#dce3ea',

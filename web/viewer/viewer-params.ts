@@ -47,11 +47,11 @@ export const PARAM_KEYS = {
 } as const;
 
 /** The link/attribute name of each overlay. */
-export const OVERLAY_KEYS: Record<OverlayName, string> = {
+export const OVERLAY_KEYS = {
   control: 'control-mesh',
   curves: 'control-edges',
   bbox: 'bbox',
-};
+} as const satisfies Record<OverlayName, string>;
 
 /** "1", "true", "" (a bare attribute) or "on" mean on; "0", "false", "off" mean off. */
 export function parseFlag(value: string): boolean | null {
