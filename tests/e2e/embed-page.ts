@@ -28,6 +28,15 @@ declare global {
   }
 }
 
+/** A test page that loads the element from the app's dist/embed/ (served one folder down), with `css` and `body`. */
+export function viewerPage(title: string, css: string, body: string): string {
+  return `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>${title}</title>
+<script type="module" src="../embed/subdiv-viewer.js"></script>
+<style>${css}</style></head><body>
+${body}
+</body></html>`;
+}
+
 export class EmbedPage {
   constructor(readonly page: Page) {}
 

@@ -6,10 +6,13 @@
  */
 import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
+import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
 import { expectedClosedCounts, triangulatedQuads } from './helpers';
 
 const OCTAHEDRON = { vertices: 6, edges: 12, faces: 8 };
+/** A tetrahedron as a page would hand it to load(). */
+const TETRA = 'OFF\n4 4 0\n1 1 1\n-1 -1 1\n-1 1 -1\n1 -1 -1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n';
 
 test('the teaching example: four schemes on the octahedron, counts in the table from level-change events', async ({
   embed,
@@ -77,14 +80,14 @@ function twelveViewerPage(): string {
     const src = i === BAD ? '../meshes/missing.off' : `../meshes/${mesh}.off`;
     return `<subdiv-viewer id="v${i}" src="${src}" scheme="${scheme}" levels="${levels}" controls="full"></subdiv-viewer>`;
   });
-  return `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Twelve viewers</title>
-<script type="module" src="../embed/subdiv-viewer.js"></script>
-<style>body{margin:0 20px} subdiv-viewer{width:600px;height:300px;margin:0 0 60px}</style></head>
-<body><label>Notes <input id="field"></label>
+  return viewerPage(
+    'Twelve viewers',
+    `body{margin:0 20px} subdiv-viewer{width:600px;height:300px;margin:0 0 60px}`,
+    `<label>Notes <input id="field"></label>
 ${viewers.join('\n')}
 <iframe id="frame" title="Loop on a tetrahedron" style="width:500px;height:300px;border:0"
-  src="../embed.html?src=meshes/tetrahedron.off&amp;scheme=loop&amp;levels=1&amp;controls=none"></iframe>
-</body></html>`;
+  src="../embed.html?src=meshes/tetrahedron.off&amp;scheme=loop&amp;levels=1&amp;controls=none"></iframe>`,
+  );
 }
 
 test.describe('a page with twelve viewers and an iframe', () => {
@@ -252,12 +255,12 @@ test.describe('a page with twelve viewers and an iframe', () => {
 test("cancelling one viewer stops only its step; the next viewer's queued step completes", async ({ embed, page }) => {
   await embed.serve(
     'e2e/cancel.html',
-    `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Cancel</title>
-<script type="module" src="../embed/subdiv-viewer.js"></script>
-<style>subdiv-viewer{width:400px;height:240px}</style></head><body>
-<subdiv-viewer id="big" src="../meshes/cgal/bunny00.off" scheme="loop" levels="0"></subdiv-viewer>
-<subdiv-viewer id="small" src="../meshes/cube.off" scheme="catmull-clark" levels="0"></subdiv-viewer>
-</body></html>`,
+    viewerPage(
+      'Cancel',
+      `subdiv-viewer{width:400px;height:240px}`,
+      `<subdiv-viewer id="big" src="../meshes/cgal/bunny00.off" scheme="loop" levels="0"></subdiv-viewer>
+<subdiv-viewer id="small" src="../meshes/cube.off" scheme="catmull-clark" levels="0"></subdiv-viewer>`,
+    ),
   );
   await page.goto('./e2e/cancel.html');
   await embed.waitForLevel('big', 0);
@@ -291,15 +294,15 @@ test.describe('styled by the page', () => {
   }) => {
     await embed.serve(
       'e2e/styled.html',
-      `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Styled</title>
-<script type="module" src="../embed/subdiv-viewer.js"></script>
-<style>
+      viewerPage(
+        'Styled',
+        `
   #a { width: 420px; height: 260px; }
   subdiv-viewer::part(level-up) { background-color: rgb(200, 0, 0); }
-</style></head><body>
-<subdiv-viewer id="a" src="../meshes/cube.off" levels="1" controls="minimal"></subdiv-viewer>
-<subdiv-viewer id="b" src="../meshes/cube.off" levels="1" controls="none" background="#ffffff" style="width:300px;height:200px"></subdiv-viewer>
-</body></html>`,
+`,
+        `<subdiv-viewer id="a" src="../meshes/cube.off" levels="1" controls="minimal"></subdiv-viewer>
+<subdiv-viewer id="b" src="../meshes/cube.off" levels="1" controls="none" background="#ffffff" style="width:300px;height:200px"></subdiv-viewer>`,
+      ),
     );
     await page.goto('./e2e/styled.html');
     await embed.waitForLevel('a', 1);
@@ -339,12 +342,12 @@ test('a lost WebGL context comes back: a viewer drawn meanwhile draws its level 
   });
   await embed.serve(
     'e2e/lost.html',
-    `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Lost context</title>
-<script type="module" src="../embed/subdiv-viewer.js"></script>
-<style>subdiv-viewer{width:300px;height:220px;display:inline-block}</style></head><body>
-<subdiv-viewer id="a" src="../meshes/cube.off" levels="1" controls="none"></subdiv-viewer>
-<subdiv-viewer id="b" src="../meshes/icosahedron.off" scheme="loop" levels="1" controls="none"></subdiv-viewer>
-</body></html>`,
+    viewerPage(
+      'Lost context',
+      `subdiv-viewer{width:300px;height:220px;display:inline-block}`,
+      `<subdiv-viewer id="a" src="../meshes/cube.off" levels="1" controls="none"></subdiv-viewer>
+<subdiv-viewer id="b" src="../meshes/icosahedron.off" scheme="loop" levels="1" controls="none"></subdiv-viewer>`,
+    ),
   );
   await page.goto('./e2e/lost.html');
   await embed.waitForLevel('a', 1);
@@ -499,20 +502,19 @@ test.describe('what pages do to an element', () => {
   }) => {
     const CUBE =
       'OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n4 3 2 1 0\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n';
-    const TETRA = 'OFF\n4 4 0\n1 1 1\n-1 -1 1\n-1 1 -1\n1 -1 -1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n';
     await page.route('**/slow/*.off', async (route) => {
       await new Promise((r) => setTimeout(r, 1500));
       await route.fulfill({ body: CUBE, contentType: 'text/plain' });
     });
     await embed.serve(
       'e2e/races.html',
-      `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Races</title>
-<script type="module" src="../embed/subdiv-viewer.js"></script>
-<style>subdiv-viewer{width:320px;height:220px;display:inline-block}</style></head><body>
-<subdiv-viewer id="big" src="../meshes/cgal/bunny00.off" scheme="loop"></subdiv-viewer>
+      viewerPage(
+        'Races',
+        `subdiv-viewer{width:320px;height:220px;display:inline-block}`,
+        `<subdiv-viewer id="big" src="../meshes/cgal/bunny00.off" scheme="loop"></subdiv-viewer>
 <subdiv-viewer id="slow"></subdiv-viewer>
-<subdiv-viewer id="gone" levels="2"></subdiv-viewer>
-</body></html>`,
+<subdiv-viewer id="gone" levels="2"></subdiv-viewer>`,
+      ),
     );
     await page.goto('./e2e/races.html');
     await test.step('levels back to 0 during the first Loop step of the bunny stops it', async () => {
@@ -575,17 +577,16 @@ test.describe('what pages do to an element, continued', () => {
     embed,
     page,
   }) => {
-    const TETRA = 'OFF\n4 4 0\n1 1 1\n-1 -1 1\n-1 1 -1\n1 -1 -1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n';
     await page.route('**/missing.off', (route) => route.fulfill({ status: 404, body: 'Not found' }));
     await embed.serve(
       'e2e/more.html',
-      `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>More</title>
-<script type="module" src="../embed/subdiv-viewer.js"></script>
-<style>subdiv-viewer{width:300px;height:200px;display:inline-block}</style></head><body>
-<subdiv-viewer id="a" src="../meshes/cube.off"></subdiv-viewer>
+      viewerPage(
+        'More',
+        `subdiv-viewer{width:300px;height:200px;display:inline-block}`,
+        `<subdiv-viewer id="a" src="../meshes/cube.off"></subdiv-viewer>
 <subdiv-viewer id="b" src="../meshes/cube.off"></subdiv-viewer>
-<subdiv-viewer id="c" src="../meshes/cgal/bunny00.off" scheme="loop"></subdiv-viewer>
-</body></html>`,
+<subdiv-viewer id="c" src="../meshes/cgal/bunny00.off" scheme="loop"></subdiv-viewer>`,
+      ),
     );
     await page.goto('./e2e/more.html');
     await embed.waitForLevel('a', 0);
