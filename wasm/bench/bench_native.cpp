@@ -1,5 +1,6 @@
 // Native side of `npm run bench`: times one subdivision step of each scheme on
-// a mesh with the same C++ core the WASM module is built from, and prints one
+// a mesh with CGAL's own hosts (Subdivide_options::cgal_hosts; the fast hosts
+// are the WASM side's), natively, and prints one
 // JSON object per scheme (scheme, faces, median_ms, runs_ms) on stdout.
 // Usage: subdiv_bench_native MESH.off [RUNS] [SCHEME...]
 #include <algorithm>
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
     Subdivide_options options;
     options.scheme = scheme;
     options.levels = 1;
+    options.cgal_hosts = true;  // the reference: CGAL's own hosts
     std::vector<double> times;
     std::size_t faces = 0;
     // One untimed warm-up run, then `runs` timed ones.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dqq_border_3.h"
+#include "refine/primal_masks.h"
 #include "table_masks_3.h"
 
 namespace subdivlab {
@@ -119,13 +120,17 @@ Status check_custom_rules_cover(const Custom_rules& r, const Mesh& mesh) {
   for (Mesh::Vertex_index v : mesh.vertices()) {
     if (mesh.is_border(v, /*check_all_incident_halfedges=*/true)) continue;
     const std::size_t n = mesh.degree(v);
-    if (n < first || n > last)
-      return refuse("the vertex rule has no weights for valence " +
-                    std::to_string(n) + " (the table covers valences " +
-                    std::to_string(first) + " to " + std::to_string(last) +
-                    ")");
+    if (n < first || n > last) return custom_rules_valence_refusal(r, n);
   }
   return Status::success();
+}
+
+Status custom_rules_valence_refusal(const Custom_rules& r, std::size_t n) {
+  const std::size_t first = static_cast<std::size_t>(r.first_valence);
+  const std::size_t last = first + r.vertex.size() - 1;
+  return refuse("the vertex rule has no weights for valence " +
+                std::to_string(n) + " (the table covers valences " +
+                std::to_string(first) + " to " + std::to_string(last) + ")");
 }
 
 Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
@@ -138,26 +143,18 @@ Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
       r.vertex.push_back(weights(double(n)));
   };
   if (name == "catmull-clark") {
-    // CGAL's CatmullClark_mask_3: ((n-3) S + 2 R + Q) / n with R the mean edge
-    // midpoint and Q the mean face point.
+    // The weights of the fast hosts' masks (refine/primal_masks.h).
     r.host = "pqq";
-    for_valences([](double n) {
-      return Vertex_weights{(n - 2) / n, 1 / (n * n), 1 / (n * n)};
-    });
+    for_valences(refine::catmull_clark_vertex_weights);
     r.edge_end = 0.25;
     r.edge_wing = 0.25;
   } else if (name == "loop" || name == "improved-loop") {
     r.host = "ptq";
     const bool improved = name == "improved-loop";
     for_valences([&](double n) {
+      if (!improved || n == 6) return refine::loop_vertex_weights(n);
       double beta;  // weight of each neighbour
-      if (n == 6) {
-        beta = 1.0 / 16.0;
-      } else if (!improved) {
-        // Loop_mask_3: c(n) = 5/8 - (3 + 2 cos(2 pi / n))^2 / 64.
-        const double t = 3 + 2 * std::cos(2 * pi / n);
-        beta = (5.0 / 8.0 - t * t / 64.0) / n;
-      } else if (n == 3) {
+      if (n == 3) {
         // CGAL's Customized_subdivision example, verbatim (6.283 included).
         beta = (5.0 / 8.0 - std::sqrt(3 + 2 * std::cos(6.283 / n)) / 64.0) / n;
       } else {

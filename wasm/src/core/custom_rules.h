@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,10 @@ Status check_custom_rules(const Custom_rules& rules);
 /// ptq, sqrt3) and every face degree (dqq). Precondition: check_custom_rules
 /// succeeded.
 Status check_custom_rules_cover(const Custom_rules& rules, const Mesh& mesh);
+
+/// The refusal of check_custom_rules_cover for an interior vertex of
+/// valence n that the vertex table does not cover.
+Status custom_rules_valence_refusal(const Custom_rules& rules, std::size_t n);
 
 /// Whether the host needs a triangle mesh (ptq, sqrt3).
 inline bool custom_rules_need_triangles(const Custom_rules& rules) {

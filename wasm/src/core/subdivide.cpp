@@ -31,6 +31,10 @@
 #include "linear_masks_3.h"
 #include "mesh_build.h"
 #include "quad_triangle_3.h"
+#include "refine/level_convert.h"
+#include "refine/primal_hosts.h"
+#include "refine/primal_masks.h"
+#include "refine/primal_points.h"
 
 namespace subdivlab {
 namespace {
@@ -419,6 +423,42 @@ double to_buffers_peak(const Counts& n, const Caps& caps, double base) {
          buffers_bytes(n.vertices, n.faces, 0) + 4 * (indices + indices / 2);
 }
 
+/// The fast primal hosts (refine/): the schemes whose size model is
+/// catmull-clark (PQQ) or loop (PTQ) run there. Their peak: the parent and
+/// child levels' tables and the step's per-vertex sums; on the first step
+/// the Surface_mesh the level came from (freed before the step); after the
+/// last, the child level with the output's face arrays (the positions move
+/// out). The child of the last step has no halfedge corners.
+bool runs_on_fast_host(const Subdivide_options& o) {
+  const std::string model = size_model(o);
+  return !o.cgal_hosts && (model == "catmull-clark" || model == "loop");
+}
+
+double fast_step_peak(const std::string& scheme, const Counts& c,
+                      const Counts& n, const Caps& caps, bool first, bool last,
+                      double marks, double base) {
+  const bool marked = marks > 0;
+  const double parent =
+      refine::level_bytes(c.vertices, c.edges, c.degree_sum(), marked) +
+      (first ? 4 * (c.faces + 1) : 0);
+  const double child =
+      refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked) -
+      (last ? 8 * n.edges : 0);
+  double peak = base + parent + child +
+                refine::primal_scratch_bytes(
+                    c.vertices, scheme == "catmull-clark", c.border_edges > 0);
+  // The control edges as pairs (8 bytes): the input's, as
+  // initial_control_edges grew them, until they are marked in the first
+  // level; the output's, after the last.
+  if (first)
+    peak = std::max(
+        peak, base + caps_bytes(caps) + parent + control_edge_bytes(marks));
+  if (last)
+    peak = std::max(
+        peak, base + child + 4 * n.degree_sum() + 4 * n.faces + 8 * 2 * marks);
+  return peak;
+}
+
 // ---------------------------------------------------------------------------
 // Messages.
 
@@ -464,13 +504,23 @@ struct Step_need {
 };
 
 /// The step from `c` (mesh arrays at `caps`) with the input buffers
-/// (`input_bytes`) alive; `last` adds to_buffers.
-Step_need step_need(const std::string& scheme, const Counts& c,
-                    const Caps& caps, int global_step, bool last,
-                    double input_bytes) {
+/// (`input_bytes`) and `marks` control edges alive; `first` is the first
+/// step of the call, `last` its last (which adds the output buffers).
+Step_need step_need(const Subdivide_options& options, const Counts& c,
+                    const Caps& caps, int global_step, bool first, bool last,
+                    double marks, double input_bytes) {
+  const std::string scheme = size_model(options);
   Step_need need;
   need.after = next_counts(scheme, c, global_step);
   need.caps_after = caps;
+  if (runs_on_fast_host(options)) {
+    need.peak_bytes = fast_step_peak(scheme, c, need.after, caps, first, last,
+                                     marks, input_bytes) *
+                          kSlackFactor +
+                      kSlackBytes;
+    return need;
+  }
+  input_bytes += control_edge_bytes(marks);
   double peak = simulate_step(scheme, c, need.after, need.caps_after,
                               input_bytes, global_step);
   if (last)
@@ -521,9 +571,8 @@ Status predict_run(const Subdivide_options& options, Counts c, double input,
   double peak = to_buffers_peak(c, caps, input) * kSlackFactor + kSlackBytes;
   for (int i = 0; i < options.levels; ++i) {
     const int global_step = options.start_level + i;
-    const Step_need need =
-        step_need(size_model(options), c, caps, global_step,
-                  i + 1 == options.levels, input + control_edge_bytes(marks));
+    const Step_need need = step_need(options, c, caps, global_step, i == 0,
+                                     i + 1 == options.levels, marks, input);
     if (refuse) {
       const Status s = check_step(options.scheme, need, global_step,
                                   options.memory_limit_bytes);
@@ -682,25 +731,78 @@ Status sqrt3_step(Mesh& mesh, int global_step) {
 /// Averaging overflows near the largest double: a file's 1e308 is finite and
 /// accepted, but a sum of such coordinates is not (and custom weights can be
 /// large too). A step must not hand out inf or nan, which no file can hold.
+Status overflow(const Mesh_buffers& in, const std::string& scheme, int level) {
+  double largest = 0.0;
+  for (double x : in.positions) largest = std::max(largest, std::abs(x));
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", largest);
+  return Status::error(
+      Status_code::invalid_mesh,
+      "level " + std::to_string(level) + " of " + scheme +
+          " overflows: a new coordinate is not finite (the input's "
+          "coordinates reach " +
+          buf +
+          "; coordinates or weights this large exceed double precision "
+          "arithmetic, scale the mesh down)");
+}
+
 Status check_finite_points(const Mesh& mesh, const Mesh_buffers& in,
                            const std::string& scheme, int level) {
   for (Mesh::Vertex_index v : mesh.vertices()) {
     const Point& p = mesh.point(v);
-    if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
-      continue;
-    double largest = 0.0;
-    for (double x : in.positions) largest = std::max(largest, std::abs(x));
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", largest);
-    return Status::error(
-        Status_code::invalid_mesh,
-        "level " + std::to_string(level) + " of " + scheme +
-            " overflows: a new coordinate is not finite (the input's "
-            "coordinates reach " +
-            buf +
-            "; coordinates or weights this large exceed double precision "
-            "arithmetic, scale the mesh down)");
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      return overflow(in, scheme, level);
   }
+  return Status::success();
+}
+
+/// Runs the steps of `options` on the fast primal hosts (refine/, `mask`
+/// from refine::primal_mask) from `mesh`, which is freed once its tables
+/// are taken; `control` marks the control edges (when tracked). Each step
+/// is checked against the memory limit first, as the CGAL steps are.
+/// `level` follows the step for messages.
+Status run_primal_steps(Mesh& mesh, const refine::Primal_mask& mask,
+                        Control_edges* control,
+                        const Subdivide_options& options,
+                        const Mesh_buffers& in, Counts counts, double input,
+                        Mesh_buffers& out, int& level) {
+  const Caps mesh_caps = Caps::exact(counts);
+  refine::Level parent = refine::level_from_mesh(mesh);
+  double marks = control != nullptr ? static_cast<double>(control->size()) : 0;
+  if (control != nullptr) {
+    refine::mark_edges(mesh, *control, parent);
+    Control_edges().swap(*control);
+  }
+  mesh = Mesh();
+  refine::Level child;
+  refine::Primal_scratch scratch;
+  for (int i = 0; i < options.levels; ++i) {
+    level = options.start_level + i + 1;
+    const bool last = i + 1 == options.levels;
+    const Step_need need =
+        step_need(options, counts, mesh_caps, options.start_level + i, i == 0,
+                  last, marks, input);
+    Status s = check_step(options.scheme, need, options.start_level + i,
+                          options.memory_limit_bytes);
+    if (!s.ok()) return s;
+    const std::uint32_t uncovered =
+        refine::primal_uncovered_valence(parent, mask, scratch);
+    if (uncovered != 0)
+      return custom_rules_valence_refusal(options.custom, uncovered);
+    if (mask.pqq)
+      refine::refine_pqq_topology(parent, child, last);
+    else
+      refine::refine_ptq_topology(parent, child, last);
+    refine::refine_primal_points(parent, mask, scratch, child);
+    for (double x : child.positions)
+      if (!std::isfinite(x)) return overflow(in, options.scheme, level);
+    std::swap(parent, child);
+    counts = need.after;
+    marks *= 2;
+  }
+  child = refine::Level();
+  scratch = refine::Primal_scratch();
+  out = refine::level_to_buffers(std::move(parent));
   return Status::success();
 }
 
@@ -831,15 +933,22 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
     if (s.ok())
       s = predict_run(options, counts, input,
                       static_cast<double>(control.size()), true, run);
+    const refine::Primal_mask_lookup fast =
+        refine::primal_mask(options.scheme, options.custom);
+    if (s.ok() && fast.ok && runs_on_fast_host(options) && options.levels > 0) {
+      s = run_primal_steps(mesh, fast.mask, track ? &control : nullptr, options,
+                           in, counts, input, result.value, level);
+      if (!s.ok()) result = Result<Mesh_buffers>{s, {}};
+      return result;
+    }
     // The model follows the real mesh: its counts are re-read after every
     // step, the array capacities simulated (they are not observable).
     Caps caps = Caps::exact(counts);
     for (int i = 0; s.ok() && i < options.levels; ++i) {
       level = options.start_level + i + 1;
       const Step_need need = step_need(
-          size_model(options), counts, caps, options.start_level + i,
-          i + 1 == options.levels,
-          input + control_edge_bytes(static_cast<double>(control.size())));
+          options, counts, caps, options.start_level + i, i == 0,
+          i + 1 == options.levels, static_cast<double>(control.size()), input);
       s = check_step(options.scheme, need, options.start_level + i,
                      options.memory_limit_bytes);
       const auto old_end =

@@ -30,6 +30,10 @@ struct Subdivide_options {
   bool smooth_boundary = true;
   /// custom: the host and the mask weights (custom_rules.h).
   Custom_rules custom;
+  /// Run CGAL's hosts even where a fast host (refine/) exists: the
+  /// reference the fast hosts are compared with, in the tests and in the
+  /// benchmark's CGAL column. Same results (to 1e-12), more time and memory.
+  bool cgal_hosts = false;
 };
 
 /// Counts predicted for a mesh after `levels` steps of a scheme, and the

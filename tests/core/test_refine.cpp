@@ -1,0 +1,265 @@
+// The fast refinement hosts (wasm/src/refine) against CGAL's: the same
+// numbering of vertices and faces, the same face corners in the same order,
+// and the same points to 1e-12 of the mesh's size, at levels 1-3 of every
+// fixture, closed and open, for each primal scheme and its custom twin.
+
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Subdivision_method_3/internal/subdivision_hosts_impl_3.h>
+#include <CGAL/subdivision_method_3.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+
+#include "core/custom_rules.h"
+#include "core/linear_masks_3.h"
+#include "core/mesh_build.h"
+#include "core/mesh_io.h"
+#include "core/subdivide.h"
+#include "core/table_masks_3.h"
+#include "refine/level_convert.h"
+#include "refine/primal_hosts.h"
+#include "refine/primal_masks.h"
+#include "refine/primal_points.h"
+
+namespace subdivlab {
+namespace {
+
+namespace SM3 = CGAL::Subdivision_method_3;
+
+Mesh load(const std::string& name, bool triangulate) {
+  std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const Result<Mesh_buffers> r = read_mesh(ss.str(), Mesh_format::off);
+  EXPECT_TRUE(r.ok()) << name << ": " << r.status.message;
+  Mesh m;
+  EXPECT_TRUE(build_mesh(r.value, m).ok()) << name;
+  if (triangulate) {
+    CGAL::Polygon_mesh_processing::triangulate_faces(m);
+    m.collect_garbage();
+  }
+  return m;
+}
+
+/// One CGAL step of a primal scheme, as subdivide.cpp's CGAL path runs it.
+void cgal_step(const std::string& scheme, const Custom_rules& rules, Mesh& m) {
+  const auto one = CGAL::parameters::number_of_iterations(1);
+  if (scheme == "catmull-clark") SM3::CatmullClark_subdivision(m, one);
+  if (scheme == "loop") SM3::Loop_subdivision(m, one);
+  if (scheme == "linear") Linear_subdivision(m);
+  if (scheme == "linear-tri") Linear_triangle_subdivision(m);
+  if (scheme == "custom") custom_subdivision_step(m, rules, 0);
+}
+
+double size_of(const std::vector<double>& p) {
+  double s = 0;
+  for (double x : p) s = std::max(s, std::abs(x));
+  return s;
+}
+
+/// Fast levels 1..3 of `mesh` equal CGAL's, index for index.
+void expect_cgal_levels(const std::string& scheme, const Custom_rules& rules,
+                        const std::string& fixture, bool triangulate) {
+  const std::string what =
+      scheme + (scheme == "custom" ? "/" + rules.host : std::string()) +
+      " on " + fixture;
+  Mesh reference = load(fixture, triangulate);
+  refine::Level level = refine::level_from_mesh(reference);
+  const refine::Primal_mask_lookup mask = refine::primal_mask(scheme, rules);
+  ASSERT_TRUE(mask.ok) << what;
+  refine::Primal_scratch scratch;
+  for (int k = 1; k <= 3; ++k) {
+    cgal_step(scheme, rules, reference);
+    const Mesh_buffers expected = to_buffers(reference);
+    refine::Level child;
+    ASSERT_EQ(refine::primal_uncovered_valence(level, mask.mask, scratch), 0u);
+    if (mask.mask.pqq)
+      refine::refine_pqq_topology(level, child, false);
+    else
+      refine::refine_ptq_topology(level, child, false);
+    refine::refine_primal_points(level, mask.mask, scratch, child);
+    level = child;
+    const Mesh_buffers got = refine::level_to_buffers(std::move(child));
+    const std::string at = what + ", level " + std::to_string(k);
+    ASSERT_EQ(got.vertex_count(), expected.vertex_count()) << at;
+    ASSERT_EQ(got.face_sizes, expected.face_sizes) << at;
+    ASSERT_EQ(got.face_indices, expected.face_indices) << at;
+    ASSERT_EQ(level.edge_count, reference.number_of_edges()) << at;
+    const double tol = 1e-12 * size_of(expected.positions);
+    for (std::size_t i = 0; i < expected.positions.size(); ++i)
+      ASSERT_NEAR(got.positions[i], expected.positions[i], tol)
+          << at << ", vertex " << i / 3;
+    // The halfedges too: same targets, edge by edge.
+    for (Mesh::Halfedge_index h : reference.halfedges())
+      ASSERT_EQ(level.halfedge_target[h.idx()], reference.target(h).idx())
+          << at << ", halfedge " << h.idx();
+  }
+}
+
+const char* const kAnyFaces[] = {
+    "cube.off",        "tetrahedron.off",         "octahedron.off",
+    "icosahedron.off", "rhombicuboctahedron.off", "torus-quad.off",
+    "torus-tri.off",   "two-tetrahedra.off",      "disk-tri.off",
+    "grid-open.off",   "mixed-open.off"};
+
+TEST(FastPrimalHosts, CatmullClarkAndLinearEqualCgal) {
+  for (const char* f : kAnyFaces) {
+    expect_cgal_levels("catmull-clark", {}, f, false);
+    expect_cgal_levels("linear", {}, f, false);
+    expect_cgal_levels("custom", custom_rules_preset("catmull-clark", 64), f,
+                       false);
+  }
+}
+
+TEST(FastPrimalHosts, LoopAndLinearTriEqualCgal) {
+  for (const char* f : kAnyFaces) {
+    expect_cgal_levels("loop", {}, f, true);
+    expect_cgal_levels("linear-tri", {}, f, true);
+    expect_cgal_levels("custom", custom_rules_preset("improved-loop", 64), f,
+                       true);
+  }
+}
+
+TEST(FastPrimalHosts, CustomBorderRulesReadTheBorderChainInCgalOrder) {
+  // Border rules with all four weights, on open meshes.
+  Custom_rules pqq = custom_rules_preset("catmull-clark", 64);
+  pqq.border_edge = {-0.0625, 0.5625, 0.5625, -0.0625};  // four-point
+  pqq.border_vertex = {0.2, 0.5, 0.3};                   // asymmetric
+  Custom_rules ptq = custom_rules_preset("loop", 64);
+  ptq.border_edge = pqq.border_edge;
+  ptq.border_vertex = pqq.border_vertex;
+  for (const char* f : {"disk-tri.off", "grid-open.off", "mixed-open.off"}) {
+    expect_cgal_levels("custom", pqq, f, false);
+    expect_cgal_levels("custom", ptq, f, true);
+  }
+}
+
+Mesh_buffers fixture_buffers(const std::string& name) {
+  return to_buffers(load(name, false));
+}
+
+/// subdivide_mesh on the fast hosts and on CGAL's give the same buffers:
+/// points (1e-12), faces, and control edges (as sets of pairs).
+void expect_same_run(const Mesh_buffers& in, Subdivide_options o,
+                     const std::string& what) {
+  const Result<Mesh_buffers> fast = subdivide_mesh(in, o);
+  o.cgal_hosts = true;
+  const Result<Mesh_buffers> cgal = subdivide_mesh(in, o);
+  ASSERT_TRUE(cgal.ok()) << what << ": " << cgal.status.message;
+  ASSERT_TRUE(fast.ok()) << what << ": " << fast.status.message;
+  ASSERT_EQ(fast.value.face_sizes, cgal.value.face_sizes) << what;
+  ASSERT_EQ(fast.value.face_indices, cgal.value.face_indices) << what;
+  ASSERT_EQ(fast.value.positions.size(), cgal.value.positions.size()) << what;
+  const double tol = 1e-12 * size_of(cgal.value.positions);
+  for (std::size_t i = 0; i < cgal.value.positions.size(); ++i)
+    ASSERT_NEAR(fast.value.positions[i], cgal.value.positions[i], tol)
+        << what << ", vertex " << i / 3;
+  auto pairs = [](const std::vector<std::uint32_t>& e) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> p;
+    for (std::size_t i = 0; i + 1 < e.size(); i += 2)
+      p.emplace_back(std::min(e[i], e[i + 1]), std::max(e[i], e[i + 1]));
+    std::sort(p.begin(), p.end());
+    return p;
+  };
+  EXPECT_EQ(pairs(fast.value.control_edges), pairs(cgal.value.control_edges))
+      << what;
+}
+
+TEST(FastPrimalHosts, SubdivideMeshEqualsItsCgalHostsOnEveryFixture) {
+  for (const char* f : kAnyFaces) {
+    const Mesh_buffers in = fixture_buffers(f);
+    for (const char* scheme :
+         {"catmull-clark", "loop", "linear", "linear-tri", "custom"}) {
+      for (int levels = 1; levels <= 3; ++levels) {
+        Subdivide_options o;
+        o.scheme = scheme;
+        o.levels = levels;
+        o.triangulate = true;  // loop on polygons: CGAL triangulates first
+        if (o.scheme == "custom")
+          o.custom =
+              custom_rules_preset(levels == 2 ? "loop" : "catmull-clark");
+        expect_same_run(
+            in, o,
+            std::string(scheme) + " x" + std::to_string(levels) + " on " + f);
+      }
+    }
+  }
+}
+
+TEST(FastPrimalHosts, SubdivideMeshEqualsItsCgalHostsOnCgalsMeshes) {
+  // Larger meshes from CGAL's data set (set-up extracts them): open with
+  // holes, closed with high valences.
+  for (const char* f : {"holes.off", "fandisk.off", "mannequin-devil.off"}) {
+    std::ifstream file(
+        std::string(FIXTURES_DIR) + "/../../public/meshes/cgal/" + f,
+        std::ios::binary);
+    ASSERT_TRUE(file.good()) << f << " missing: run node scripts/setup.mjs";
+    std::stringstream text;
+    text << file.rdbuf();
+    const Result<Mesh_buffers> in = read_mesh(text.str(), Mesh_format::off);
+    ASSERT_TRUE(in.ok()) << f;
+    for (const char* scheme : {"catmull-clark", "loop"}) {
+      Subdivide_options o;
+      o.scheme = scheme;
+      o.levels = 2;
+      expect_same_run(in.value, o, std::string(scheme) + " x2 on " + f);
+    }
+  }
+}
+
+TEST(FastPrimalHosts, LevelByLevelCarriesTheControlEdgesAsCgalDoes) {
+  // A level-2 mesh with its marks, subdivided once more from start_level 2.
+  for (const char* f : {"rhombicuboctahedron.off", "mixed-open.off"}) {
+    Subdivide_options o;
+    o.levels = 2;
+    Mesh_buffers level2 = subdivide_mesh(fixture_buffers(f), o).value;
+    o.levels = 1;
+    o.start_level = 2;
+    expect_same_run(level2, o,
+                    std::string("catmull-clark from level 2 of ") + f);
+  }
+}
+
+TEST(FastPrimalHosts,
+     CustomTablesThatStopShortAreRefusedAtTheLevelThatNeedsMore) {
+  // Valences 3-4 only: the cube's level 0 (valence 3) and level 1 (4) are
+  // covered; the rhombicuboctahedron's are too, but level 1 of a pentagon
+  // prism has a face point of valence 5.
+  Subdivide_options o;
+  o.scheme = "custom";
+  o.custom = custom_rules_preset("catmull-clark", 4);
+  o.levels = 3;
+  EXPECT_TRUE(subdivide_mesh(fixture_buffers("cube.off"), o).ok());
+  Mesh_buffers prism;
+  for (int i = 0; i < 5; ++i) {
+    const double a = 2 * CGAL_PI * i / 5;
+    for (double z : {0.0, 1.0}) {
+      prism.positions.push_back(std::cos(a));
+      prism.positions.push_back(std::sin(a));
+      prism.positions.push_back(z);
+    }
+  }
+  prism.face_sizes = {5, 5, 4, 4, 4, 4, 4};
+  prism.face_indices = {8, 6, 4, 2, 0, 1, 3, 5, 7, 9};
+  for (std::uint32_t i = 0; i < 5; ++i) {
+    const std::uint32_t j = (i + 1) % 5;
+    for (std::uint32_t v : {2 * i, 2 * j, 2 * j + 1, 2 * i + 1})
+      prism.face_indices.push_back(v);
+  }
+  const Result<Mesh_buffers> r = subdivide_mesh(prism, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.code, Status_code::invalid_argument);
+  EXPECT_EQ(r.status.message,
+            "custom rules: the vertex rule has no weights for valence 5 (the "
+            "table covers valences 3 to 4)");
+  o.cgal_hosts = true;
+  EXPECT_EQ(subdivide_mesh(prism, o).status.message, r.status.message);
+}
+
+}  // namespace
+}  // namespace subdivlab

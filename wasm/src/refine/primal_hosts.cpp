@@ -1,0 +1,206 @@
+// The PQQ and PTQ hosts' numbering, derived from CGAL's PQQ_1step and
+// PTQ_1step on Surface_mesh (CGAL 5.5,
+// Subdivision_method_3/internal/subdivision_hosts_impl_3.h):
+//
+// Edge split (both hosts; insert_vertex on halfedge 2e, a -> b, through
+// Euler::split_vertex): vertex m = V + e and edge E + e are added; 2e runs
+// a -> m, 2e + 1 m -> a, 2(E + e) m -> b, 2(E + e) + 1 b -> m. So a parent
+// halfedge x splits into first(x) (from its source to m) and second(x)
+// (from m to its target): x and x + 2E when x is even, x + 2E and x when it
+// is odd. Each split sets the faces beside it to start at the second half,
+// so after all splits face f starts at second(g*), g* its halfedge of
+// highest edge index; its corners v1, v2, ... vk start at target(g*) and
+// g_j runs v_j -> v_j+1 (g_k = g*), split at m_j.
+//
+// PQQ, per face (k corners, face point c = V + E + f, first new edge
+// 2E + offset(f), first new face F + offset(f) - f = b):
+//   split_face(v1->m1, v2->m2) adds edge m1-m2 (even halfedge m1 -> m2) and
+//   face b = the corner quad at v2; split_vertex on that edge adds c and
+//   edge c-m2 (even c -> m2), leaving m1 -> c; then for j = 3..k,
+//   split_face(v_j->m_j, m1->c) adds edge m_j-c (even m_j -> c) and cuts
+//   the quad at v_j off the rest, the quad keeping the rest's face (f at
+//   j = 3, then the face the previous cut added) and the rest getting a new
+//   one. Quads: v1 -> b + k - 2, v2 -> b, v3 -> f, v_j -> b + j - 3. Each
+//   quad (c, m_j-1, v_j, m_j) starts at c -> m_j-1 for j <= 2 and at
+//   m_j -> c after, as the last split_face set it.
+// PTQ, per face (new edges 2E + 3f ...): split_face(v1->m1, v2->m2) adds
+//   m1-m2 (even m1 -> m2) and face F + 3f (corner v2); split_face(m1->m2,
+//   v3->m3) adds m2-m3 and F + 3f + 1 (corner v3); split_face(m2->m3,
+//   v1->m1) adds m3-m1 and F + 3f + 2 (corner v1); f keeps the middle
+//   triangle. Each corner triangle starts at its inner edge's odd halfedge,
+//   the middle one at m3 -> m1.
+
+#include "primal_hosts.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace subdivlab {
+namespace refine {
+namespace {
+
+/// Sizes the vector to n elements; a vector too small is freed before the
+/// new block is taken (its contents are not kept), so that old and new
+/// blocks never coexist.
+template <class T>
+void size_to(std::vector<T>& v, std::size_t n) {
+  if (v.capacity() < n) std::vector<T>().swap(v);
+  v.resize(n);
+}
+
+/// The halves of parent halfedge x after the edge splits (E parent edges).
+inline std::uint32_t first_half(std::uint32_t x, std::uint32_t E) {
+  return (x & 1) != 0 ? x + 2 * E : x;
+}
+inline std::uint32_t second_half(std::uint32_t x, std::uint32_t E) {
+  return (x & 1) != 0 ? x : x + 2 * E;
+}
+
+/// Counts, halfedge targets of the split edges, border halves, marks:
+/// everything both hosts do alike.
+void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
+                 bool last) {
+  const std::uint32_t V = p.vertex_count, E = p.edge_count;
+  c.edge_count = child_edges;
+  c.border_edge_count = 2 * p.border_edge_count;
+  c.face_offsets = {};
+  size_to(c.halfedge_target, 2 * std::size_t{child_edges});
+  if (last)
+    c.halfedge_corner = {};
+  else
+    size_to(c.halfedge_corner, 2 * std::size_t{child_edges});
+  std::uint32_t* t = c.halfedge_target.data();
+  const std::uint32_t* pt = p.halfedge_target.data();
+  for (std::uint32_t e = 0; e < E; ++e) {
+    const std::uint32_t a = pt[2 * e + 1], b = pt[2 * e], m = V + e;
+    t[2 * e] = m;
+    t[2 * e + 1] = a;
+    t[2 * (E + e)] = b;
+    t[2 * (E + e) + 1] = m;
+  }
+  if (!last && p.border_edge_count > 0) {
+    // Border halves: the faces below never write them.
+    const std::uint32_t* pc = p.halfedge_corner.data();
+    std::uint32_t* cc = c.halfedge_corner.data();
+    for (std::uint32_t x = 0; x < 2 * E; ++x) {
+      if (pc[x] != kNone) continue;
+      cc[first_half(x, E)] = kNone;
+      cc[second_half(x, E)] = kNone;
+    }
+  }
+  if (p.edge_marks.empty()) {
+    c.edge_marks = {};
+  } else {
+    size_to(c.edge_marks, child_edges);
+    std::memcpy(c.edge_marks.data(), p.edge_marks.data(), E);
+    std::memcpy(c.edge_marks.data() + E, p.edge_marks.data(), E);
+    std::fill(c.edge_marks.begin() + 2 * std::size_t{E}, c.edge_marks.end(), 0);
+  }
+}
+
+/// Writes child face `face`'s four or three halfedges, and their corners.
+template <std::uint32_t K>
+inline void put_face(Level& c, std::uint32_t face, const std::uint32_t (&h)[K],
+                     bool last) {
+  std::uint32_t* out = c.face_halfedges.data() + std::size_t{K} * face;
+  for (std::uint32_t r = 0; r < K; ++r) out[r] = h[r];
+  if (last) return;
+  std::uint32_t* corner = c.halfedge_corner.data();
+  for (std::uint32_t r = 0; r < K; ++r) corner[h[r]] = K * face + r;
+}
+
+}  // namespace
+
+Child_counts pqq_counts(const Level& p) {
+  return {double(p.vertex_count) + p.edge_count + p.face_count,
+          2.0 * p.edge_count + p.corner_count(), double(p.corner_count())};
+}
+
+Child_counts ptq_counts(const Level& p) {
+  return {double(p.vertex_count) + p.edge_count,
+          2.0 * p.edge_count + 3.0 * p.face_count, 4.0 * p.face_count};
+}
+
+void refine_pqq_topology(const Level& p, Level& c, bool last) {
+  const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
+                      S = p.corner_count();
+  split_edges(p, c, 2 * E + S, last);
+  c.vertex_count = V + E + F;
+  c.face_count = S;
+  c.uniform_degree = 4;
+  size_to(c.face_halfedges, 4 * std::size_t{S});
+  std::uint32_t* t = c.halfedge_target.data();
+  for (std::uint32_t f = 0; f < F; ++f) {
+    const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
+    const std::uint32_t* fh = p.face_halfedges.data() + begin;
+    const std::uint32_t start = first_corner_offset(fh, k);
+    // g(j) for j = 1..k.
+    auto g = [&](std::uint32_t j) {
+      const std::uint32_t i = start + j;
+      return fh[i < k ? i : i - k];
+    };
+    const std::uint32_t centre = V + E + f, first_edge = 2 * E + begin,
+                        first_face = F + begin - f;
+    // Spoke j joins m_j and c: its halfedge m_j -> c (even, but odd for j=2).
+    auto into_centre = [&](std::uint32_t j) {
+      const std::uint32_t e = first_edge + j - 1;
+      return j == 2 ? 2 * e + 1 : 2 * e;
+    };
+    for (std::uint32_t j = 1; j <= k; ++j) {
+      const std::uint32_t m = V + (g(j) >> 1), h = into_centre(j);
+      t[h] = centre;
+      t[h ^ 1] = m;
+    }
+    for (std::uint32_t j = 1; j <= k; ++j) {
+      const std::uint32_t before = j == 1 ? k : j - 1;
+      const std::uint32_t from_centre = into_centre(before) ^ 1,
+                          in = second_half(g(before), E),
+                          out = first_half(g(j), E), back = into_centre(j);
+      if (j == 1) {
+        put_face<4>(c, first_face + k - 2, {from_centre, in, out, back}, last);
+      } else if (j == 2) {
+        put_face<4>(c, first_face, {from_centre, in, out, back}, last);
+      } else {
+        put_face<4>(c, j == 3 ? f : first_face + j - 3,
+                    {back, from_centre, in, out}, last);
+      }
+    }
+  }
+}
+
+void refine_ptq_topology(const Level& p, Level& c, bool last) {
+  const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
+  split_edges(p, c, 2 * E + 3 * F, last);
+  c.vertex_count = V + E;
+  c.face_count = 4 * F;
+  c.uniform_degree = 3;
+  size_to(c.face_halfedges, 12 * std::size_t{F});
+  std::uint32_t* t = c.halfedge_target.data();
+  const std::uint32_t* all = p.face_halfedges.data();
+  for (std::uint32_t f = 0; f < F; ++f) {
+    const std::uint32_t* fh = all + 3 * std::size_t{f};
+    const std::uint32_t start = first_corner_offset(fh, 3);
+    const std::uint32_t g1 = fh[(start + 1) % 3], g2 = fh[(start + 2) % 3],
+                        g3 = fh[start];
+    const std::uint32_t m1 = V + (g1 >> 1), m2 = V + (g2 >> 1),
+                        m3 = V + (g3 >> 1);
+    const std::uint32_t e = 2 * E + 3 * f;
+    const std::uint32_t h12 = 2 * e, h23 = 2 * (e + 1), h31 = 2 * (e + 2);
+    t[h12] = m2;
+    t[h12 + 1] = m1;
+    t[h23] = m3;
+    t[h23 + 1] = m2;
+    t[h31] = m1;
+    t[h31 + 1] = m3;
+    put_face<3>(c, f, {h31, h12, h23}, last);
+    put_face<3>(c, F + 3 * f, {h12 + 1, second_half(g1, E), first_half(g2, E)},
+                last);
+    put_face<3>(c, F + 3 * f + 1,
+                {h23 + 1, second_half(g2, E), first_half(g3, E)}, last);
+    put_face<3>(c, F + 3 * f + 2,
+                {h31 + 1, second_half(g3, E), first_half(g1, E)}, last);
+  }
+}
+
+}  // namespace refine
+}  // namespace subdivlab

@@ -1,0 +1,49 @@
+// The primal refinement hosts on flat tables: PQQ (every k-gon into k quads
+// around a face point, as CGAL's PQQ_1step) and PTQ (every triangle into
+// four, as PTQ_1step). Topology only: the masks (primal_masks.h) compute
+// the points. Owner: primal_hosts.cpp.
+//
+// A child level's tables come from the parent's by arithmetic, in CGAL's
+// numbering (refine_level.h). Vertices: the parent's v keeps v, edge e's
+// point is V + e, face f's point (PQQ) V + E + f. Edges: edge e splits
+// into e (its source half) and E + e; then every face in order adds its
+// spokes (PQQ: one per corner) or its inner triangle's edges (PTQ: three).
+// CGAL splits the edges in index order, and each split points the faces
+// beside it at the new half; so a face's corners are taken from the end of
+// its edge of highest index (v1 below), and its children are numbered as
+// PQQ_1step / PTQ_1step insert them (derivation in primal_hosts.cpp).
+#pragma once
+
+#include "refine_level.h"
+
+namespace subdivlab {
+namespace refine {
+
+/// Child counts of one step. Corners = 4 * child faces for both hosts.
+struct Child_counts {
+  double vertices = 0, edges = 0, faces = 0;
+};
+Child_counts pqq_counts(const Level& parent);
+Child_counts ptq_counts(const Level& parent);
+
+/// The child level's topology (everything but positions): counts,
+/// face_halfedges, halfedge_target, halfedge_corner unless `last` (the
+/// last level needs no further step), border count, edge marks. `child`'s
+/// vectors are reused. Preconditions: a valid level; PTQ: triangles.
+void refine_pqq_topology(const Level& parent, Level& child, bool last);
+void refine_ptq_topology(const Level& parent, Level& child, bool last);
+
+/// Position of the corner, in parent face f (corners [begin, end)), that
+/// starts the CGAL corner order v1, v2, ...: the corner after the halfedge
+/// whose edge index is highest. g_j (v_j -> v_j+1) is corner
+/// begin + (start + j) % k, with start the returned offset.
+inline std::uint32_t first_corner_offset(const std::uint32_t* fh,
+                                         std::uint32_t k) {
+  std::uint32_t best = 0;
+  for (std::uint32_t t = 1; t < k; ++t)
+    if (fh[t] >> 1 > fh[best] >> 1) best = t;
+  return best;
+}
+
+}  // namespace refine
+}  // namespace subdivlab

@@ -1,0 +1,60 @@
+#include "primal_masks.h"
+
+#include <CGAL/number_type_config.h>
+
+#include <cmath>
+
+namespace subdivlab {
+namespace refine {
+
+Vertex_weights loop_vertex_weights(double n) {
+  double beta = 1.0 / 16.0;
+  if (n != 6) {
+    const double t = 3 + 2 * std::cos(2 * CGAL_PI / n);
+    beta = (5.0 / 8.0 - t * t / 64.0) / n;
+  }
+  return {1 - n * beta, beta, 0.0};
+}
+
+namespace {
+
+Vertex_weights linear_vertex_weights(double) { return {1.0, 0.0, 0.0}; }
+
+}  // namespace
+
+Primal_mask_lookup primal_mask(const std::string& scheme,
+                               const Custom_rules& custom) {
+  Primal_mask_lookup r;
+  Primal_mask& m = r.mask;
+  r.ok = true;
+  if (scheme == "catmull-clark") {
+    m.rule = catmull_clark_vertex_weights;
+    m.edge_end = 0.25;
+    m.edge_wing = 0.25;
+  } else if (scheme == "loop") {
+    m.pqq = false;
+    m.rule = loop_vertex_weights;
+    m.edge_end = 3.0 / 8.0;
+    m.edge_wing = 1.0 / 8.0;
+  } else if (scheme == "linear" || scheme == "linear-tri") {
+    // linear_masks_3.h: midpoints, centroids, vertices and border kept.
+    m.pqq = scheme == "linear";
+    m.rule = linear_vertex_weights;
+    m.border_vertex = {0.0, 1.0, 0.0};
+  } else if (scheme == "custom" &&
+             (custom.host == "pqq" || custom.host == "ptq")) {
+    m.pqq = custom.host == "pqq";
+    m.edge_end = custom.edge_end;
+    m.edge_wing = custom.edge_wing;
+    m.border_vertex = custom.border_vertex;
+    m.border_edge = custom.border_edge;
+    m.first_valence = custom.first_valence;
+    m.vertex = custom.vertex;
+  } else {
+    r.ok = false;
+  }
+  return r;
+}
+
+}  // namespace refine
+}  // namespace subdivlab

@@ -1,0 +1,70 @@
+// The masks of the primal schemes as weights: the geometry of the PQQ and
+// PTQ hosts (primal_hosts.h), in the form of custom rules (custom_rules.h)
+// so that built-in and custom schemes run through one kernel. The weights
+// of Catmull-Clark, Loop and the linear schemes are defined here once; the
+// custom-rule presets read them from here.
+//
+// Rules (p = the parent points; wings = the face points of the two faces of
+// an edge on PQQ, the vertices opposite it on PTQ):
+//   face point      centroid (PQQ)
+//   edge point      end (a + b) + wing (w1 + w2)
+//   vertex point    self(n) v + neighbour(n) sum(edge neighbours)
+//                   + face(n) sum(incident face points), n the valence
+//   border          along the border chain c -> b -> a -> d (border
+//                   halfedges): edge a-b gets border_edge . (c, b, a, d),
+//                   vertex b gets border_vertex . (c, b, a)
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/custom_rules.h"
+
+namespace subdivlab {
+namespace refine {
+
+/// CatmullClark_mask_3: ((n - 3) v + 2 R + Q) / n, R the mean edge
+/// midpoint and Q the mean face point.
+inline Vertex_weights catmull_clark_vertex_weights(double n) {
+  return {(n - 2) / n, 1 / (n * n), 1 / (n * n)};
+}
+
+/// Loop_mask_3: beta = (5/8 - (3 + 2 cos(2 pi / n))^2 / 64) / n, 1/16 at
+/// n = 6.
+Vertex_weights loop_vertex_weights(double n);
+
+struct Primal_mask {
+  bool pqq = true;  ///< PQQ host (face points, face wings) or PTQ
+  double edge_end = 0.5, edge_wing = 0.0;
+  std::array<double, 3> border_vertex{0.125, 0.75, 0.125};
+  std::array<double, 4> border_edge{0.0, 0.5, 0.5, 0.0};
+  /// Interior vertex weights at valence n: rule(n) when set, else the
+  /// table vertex[n - first_valence].
+  Vertex_weights (*rule)(double n) = nullptr;
+  int first_valence = 3;
+  std::vector<Vertex_weights> vertex;
+
+  /// Whether valence n has weights.
+  bool covers(std::uint32_t n) const {
+    return rule != nullptr || (n >= static_cast<std::uint32_t>(first_valence) &&
+                               n - first_valence < vertex.size());
+  }
+  /// Precondition: covers(n).
+  Vertex_weights vertex_weights(std::uint32_t n) const {
+    return rule != nullptr ? rule(double(n)) : vertex[n - first_valence];
+  }
+};
+
+/// The mask of a scheme with a primal fast host: catmull-clark, loop,
+/// linear, linear-tri, or custom with the pqq or ptq host (`custom` then
+/// gives the weights). `ok` false for any other.
+struct Primal_mask_lookup {
+  bool ok = false;
+  Primal_mask mask;
+};
+Primal_mask_lookup primal_mask(const std::string& scheme,
+                               const Custom_rules& custom);
+
+}  // namespace refine
+}  // namespace subdivlab

@@ -1,0 +1,46 @@
+// The points of a primal step: one pass over the parent's faces (face
+// points, and their sums at each vertex), one over its edges (edge points,
+// neighbour sums, valences), one over its vertices. Scatter, not gather:
+// the passes read the parent's tables in order and need no vertex rings.
+// Owner: primal_points.cpp.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "primal_masks.h"
+#include "refine_level.h"
+
+namespace subdivlab {
+namespace refine {
+
+/// Per-vertex sums a step accumulates; kept between steps so that their
+/// memory is reused.
+struct Primal_scratch {
+  std::vector<double> ring;   ///< 3 per vertex: sum of edge neighbours
+  std::vector<double> faces;  ///< 3 per vertex: sum of face points (PQQ)
+  std::vector<std::uint32_t> valence;
+  /// Border chain (border halfedges): the vertex after and before each
+  /// border vertex; kNone inside. Filled only when the level has a border.
+  std::vector<std::uint32_t> border_next, border_prev;
+  std::vector<Vertex_weights> weights;  ///< by valence
+};
+
+/// Bytes of the scratch for a parent with V vertices.
+double primal_scratch_bytes(double vertices, bool pqq, bool border);
+
+/// Largest valence of an interior vertex of `parent` that `mask` does not
+/// cover, or 0 when it covers them all (custom tables end somewhere).
+/// Fills scratch.valence and the border chain.
+std::uint32_t primal_uncovered_valence(const Level& parent,
+                                       const Primal_mask& mask,
+                                       Primal_scratch& scratch);
+
+/// child.positions from `parent` (child's topology built by the host of
+/// mask.pqq). Precondition: primal_uncovered_valence returned 0 on this
+/// parent with this scratch.
+void refine_primal_points(const Level& parent, const Primal_mask& mask,
+                          Primal_scratch& scratch, Level& child);
+
+}  // namespace refine
+}  // namespace subdivlab

@@ -1,0 +1,75 @@
+// One level of a refinement as flat tables: the fast refinement hosts
+// (primal_hosts.h) derive each level's tables from its parent's by
+// arithmetic, and the masks (primal_masks.h) compute its points with tight
+// loops over them. Owner: refine_level.cpp.
+//
+// Numbering. A level numbers its vertices, edges, halfedges and faces as
+// CGAL::Surface_mesh numbers the same mesh after the same steps of CGAL's
+// hosts (edge e has halfedges 2e and 2e + 1, each face starts at its
+// Surface_mesh::halfedge(f)), so a fast result equals CGAL's index for
+// index: CGAL stays the reference, compared element by element.
+//
+// Tables, and what the next wave adds to them without a rewrite:
+//   face_halfedges   a face's halfedges in cycle order ("corners"); a
+//                    per-corner value (face-varying UVs) is an array beside
+//                    it, refined corner by corner as the faces are
+//   halfedge_target  the vertex a halfedge points to; its source is the
+//                    target of h ^ 1
+//   halfedge_corner  where a halfedge sits in face_halfedges (kNone on the
+//                    border): its face, and next/prev around the face, so
+//                    vertex rings (limit masks) circulate without a search
+//   edge_marks       per-edge data carried to both halves of a split edge
+//                    (control edges today; crease sharpness is its sibling)
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace subdivlab {
+namespace refine {
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+struct Level {
+  std::uint32_t vertex_count = 0, edge_count = 0, face_count = 0;
+  /// Degree of every face when they all have the same one (every level a
+  /// host made), else 0 and face_offsets says.
+  std::uint32_t uniform_degree = 0;
+  /// face f's corners are [face_offsets[f], face_offsets[f + 1]); empty
+  /// when uniform_degree != 0.
+  std::vector<std::uint32_t> face_offsets;
+  std::vector<std::uint32_t> face_halfedges;   ///< one per corner
+  std::vector<std::uint32_t> halfedge_target;  ///< 2 * edge_count
+  std::vector<std::uint32_t> halfedge_corner;  ///< 2 * edge_count, or kNone
+  /// Edges with a border halfedge; 0 on a closed mesh.
+  std::uint32_t border_edge_count = 0;
+  /// One byte per edge (1 = a control edge); empty when not tracked.
+  std::vector<std::uint8_t> edge_marks;
+  std::vector<double> positions;  ///< x y z per vertex
+
+  std::uint32_t corner_count() const {
+    return static_cast<std::uint32_t>(face_halfedges.size());
+  }
+  std::uint32_t face_begin(std::uint32_t f) const {
+    return uniform_degree != 0 ? f * uniform_degree : face_offsets[f];
+  }
+  std::uint32_t face_end(std::uint32_t f) const {
+    return uniform_degree != 0 ? (f + 1) * uniform_degree : face_offsets[f + 1];
+  }
+  /// The face of a corner (a search only on a mixed level, the first).
+  std::uint32_t corner_face(std::uint32_t c) const {
+    if (uniform_degree != 0) return c / uniform_degree;
+    return static_cast<std::uint32_t>(
+        std::upper_bound(face_offsets.begin(), face_offsets.end(), c) -
+        face_offsets.begin() - 1);
+  }
+};
+
+/// Bytes the tables of a level with these counts hold (marks included when
+/// `marks`), for the memory model.
+double level_bytes(double vertices, double edges, double corners, bool marks);
+
+}  // namespace refine
+}  // namespace subdivlab
