@@ -27,6 +27,7 @@ const DEBIAN_PACKAGES = [
   'libcgal-demo',
   'clang-format',
   'libosd-dev',
+  'libfast-float-dev',
 ];
 
 function log(message) {

@@ -21,6 +21,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/mesh_facts.h"
@@ -269,7 +270,11 @@ val js_read_mesh(const std::string& text, const std::string& format_name) {
   });
 }
 
-val js_write_mesh(const val& mesh, const std::string& format_name) {
+/// Writes the mesh's text in pieces of at most `max_chunk_bytes`, each
+/// handed to `on_chunk` as a Uint8Array copy; `on_chunk` returns false to
+/// stop (the result is then still ok: the caller knows why it stopped).
+val js_write_mesh(const val& mesh, const std::string& format_name,
+                  double max_chunk_bytes, const val& on_chunk) {
   return guarded([&] {
     Mesh_format format;
     if (!parse_format(format_name, format))
@@ -277,9 +282,15 @@ val js_write_mesh(const val& mesh, const std::string& format_name) {
     const Mesh_buffers buffers = from_js_mesh(mesh);
     const Status writable = check_writable(buffers);
     if (!writable.ok()) return to_js_status(writable);
-    val out = ok_object();
-    out.set("text", write_mesh(buffers, format));
-    return out;
+    const val uint8_array = val::global("Uint8Array");
+    write_mesh_chunks(
+        buffers, format, static_cast<std::size_t>(max_chunk_bytes),
+        [&](std::string_view chunk) {
+          const val copy = uint8_array.new_(
+              emscripten::typed_memory_view(chunk.size(), chunk.data()));
+          return on_chunk(copy).as<bool>();
+        });
+    return ok_object();
   });
 }
 

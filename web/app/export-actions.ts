@@ -43,8 +43,7 @@ export class ExportActions {
 
   async mesh(format: 'off' | 'obj'): Promise<void> {
     try {
-      const text = await this.viewer.exportMesh(format);
-      saveBlob(new Blob([text], { type: 'text/plain' }), this.fileName(format));
+      saveBlob(await this.viewer.exportMesh(format), this.fileName(format));
     } catch (error) {
       this.showError(this.fileName(format), error);
     }

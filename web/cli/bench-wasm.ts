@@ -7,8 +7,8 @@
 import { readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
-import type { SchemeName } from '../core/mesh';
-import { formatFromFileName, parseMesh, subdivide } from '../core/subdiv-core';
+import type { MeshFormat, SchemeName } from '../core/mesh';
+import { exportMesh, exportMeshChunks, formatFromFileName, parseMesh, subdivide } from '../core/subdiv-core';
 
 /** Timings of one scheme, as the native bench prints them. */
 export interface SchemeTiming {
@@ -40,4 +40,61 @@ export async function benchWasm(path: string, runs: number, schemes: SchemeName[
     }
     return { scheme, faces, median_ms: median(times), runs_ms: times };
   });
+}
+
+/** Parse and write speed of one mesh in one format. */
+export interface IoTiming {
+  mesh: string;
+  format: MeshFormat;
+  bytes: number;
+  parse_ms: number;
+  parse_mb_s: number;
+  write_ms: number;
+  write_mb_s: number;
+}
+
+/** A mesh to time: a file, or that file after `levels` Loop steps (a larger text). */
+export interface IoSource {
+  name: string;
+  path: string;
+  loopLevels?: number;
+}
+
+/**
+ * Parse and write MB/s (10^6 bytes of text per second, medians of `runs`
+ * after a warm-up) through the TS API as the app and the CLI call it: parsing
+ * from a JS string, writing to the pieces an export saves.
+ */
+export async function benchIo(sources: IoSource[], runs: number): Promise<IoTiming[]> {
+  await initNode();
+  const rows: IoTiming[] = [];
+  for (const source of sources) {
+    let mesh = parseMesh(readFileSync(source.path, 'utf8'), formatFromFileName(source.path) ?? 'off');
+    if (source.loopLevels) mesh = subdivide(mesh, { scheme: 'loop', levels: source.loopLevels });
+    for (const format of ['off', 'obj'] as MeshFormat[]) {
+      const text = exportMesh(mesh, format);
+      const bytes = text.length;
+      const time = (work: () => void): number => {
+        const times: number[] = [];
+        for (let r = 0; r <= runs; r++) {
+          const start = performance.now();
+          work();
+          if (r > 0) times.push(performance.now() - start);
+        }
+        return median(times);
+      };
+      const parse_ms = time(() => parseMesh(text, format));
+      const write_ms = time(() => exportMeshChunks(mesh, format));
+      rows.push({
+        mesh: source.name,
+        format,
+        bytes,
+        parse_ms,
+        parse_mb_s: bytes / 1e3 / parse_ms,
+        write_ms,
+        write_mb_s: bytes / 1e3 / write_ms,
+      });
+    }
+  }
+  return rows;
 }

@@ -3,12 +3,12 @@
  * write it and/or print its facts. Bundled for Node into build/cli/subdiv.mjs
  * (vite.cli.config.ts) and started by bin/subdiv.mjs.
  */
-import { readFileSync, writeFileSync } from 'node:fs';
+import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
 import type { Mesh, MeshFormat, SchemeName } from '../core/mesh';
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
-import { exportMesh, formatFromFileName, meshFacts, parseMesh, schemeNames, subdivide } from '../core/subdiv-core';
+import { formatFromFileName, meshFacts, parseMesh, schemeNames, subdivide, writeMesh } from '../core/subdiv-core';
 import { SubdivError } from '../core/subdiv-error';
 import { type CliArgs, parseCliArgs, USAGE, UsageError } from './cli-args';
 
@@ -56,6 +56,18 @@ function locate(path: string, error: SubdivError): string {
   return `${path}: ${error.message}`;
 }
 
+/** Writes the mesh's text to `path` as the core produces it, without ever holding it whole. */
+function writeMeshFile(path: string, mesh: Mesh, format: MeshFormat): void {
+  const fd = openSync(path, 'w');
+  try {
+    writeMesh(mesh, format, (chunk) => {
+      for (let done = 0; done < chunk.length; ) done += writeSync(fd, chunk, done);
+    });
+  } finally {
+    closeSync(fd);
+  }
+}
+
 async function run(args: CliArgs, io: CliIo): Promise<void> {
   await initNode();
   const schemes = schemeNames();
@@ -98,7 +110,7 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   }
   if (args.output) {
     try {
-      writeFileSync(args.output.path, exportMesh(result, args.output.format));
+      writeMeshFile(args.output.path, result, args.output.format);
     } catch (error) {
       if (error instanceof SubdivError) throw new InputError(locate(args.output.path, error));
       throw new InputError(`${args.output.path}: cannot write: ${(error as Error).message}`);
@@ -124,7 +136,11 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
     stats.ms = Math.round(ms * 1000) / 1000;
     io.stdout(`${JSON.stringify(stats)}\n`);
   }
-  if (!args.output && !args.stats) io.stdout(exportMesh(result, 'off'));
+  if (!args.output && !args.stats) {
+    // Piece by piece: a text beyond one string's 512 M characters prints too.
+    const decoder = new TextDecoder();
+    writeMesh(result, 'off', (chunk) => io.stdout(decoder.decode(chunk)));
+  }
 }
 
 /**

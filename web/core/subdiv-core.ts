@@ -27,8 +27,14 @@ type RawResult<T> = ({ ok: true } & T) | RawFailure;
 
 /** What bindings.cpp registers; every call returns a result object, never throws. */
 interface CoreModule {
-  read_mesh(text: string, format: string): RawResult<{ mesh: Mesh }>;
-  write_mesh(mesh: Mesh, format: string): RawResult<{ text: string }>;
+  /** Embind takes a string (encoded by a JS loop) or the UTF-8 bytes (one copy). */
+  read_mesh(text: string | Uint8Array, format: string): RawResult<{ mesh: Mesh }>;
+  write_mesh(
+    mesh: Mesh,
+    format: string,
+    maxChunkBytes: number,
+    onChunk: (chunk: Uint8Array) => boolean,
+  ): RawResult<object>;
   subdivide(mesh: Mesh, options: CoreOptions): RawResult<{ mesh: Mesh }>;
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
@@ -109,14 +115,75 @@ function unwrap<T>(result: RawResult<T>): T {
   return result;
 }
 
-/** Parses OFF or OBJ text into a checked mesh (a valid oriented 2-manifold polygon mesh). */
-export function parseMesh(text: string, format: MeshFormat): Mesh {
-  return unwrap(module().read_mesh(text, format)).mesh;
+const encoder = new TextEncoder();
+
+/**
+ * Parses OFF or OBJ text, or its UTF-8 bytes, into a checked mesh (a valid
+ * oriented 2-manifold polygon mesh).
+ */
+export function parseMesh(text: string | Uint8Array, format: MeshFormat): Mesh {
+  // TextEncoder is native; embind's own string conversion is a JS loop.
+  const bytes = typeof text === 'string' ? encoder.encode(text) : text;
+  return unwrap(module().read_mesh(bytes, format)).mesh;
 }
 
-/** OFF or OBJ text of `mesh`; coordinates round-trip exactly. */
+/** Default bound of the pieces {@link writeMesh} hands out: 1 MiB. */
+export const DEFAULT_CHUNK_BYTES = 1 << 20;
+/** Bounds of `chunkBytes` (the largest piece stays far below a JS string's 512 M characters). */
+export const MIN_CHUNK_BYTES = 64;
+export const MAX_CHUNK_BYTES = 1 << 28;
+
+/**
+ * Writes `mesh` as OFF or OBJ text in consecutive pieces of at most
+ * `chunkBytes` bytes, each handed to `onChunk` as soon as it is written
+ * (ASCII bytes, a copy the caller owns; a piece may end inside a line). The
+ * pieces joined are {@link exportMesh}'s text, so a text too large for one
+ * string can go to a Blob or a file. Coordinates round-trip exactly. An
+ * error thrown by `onChunk` stops the writing and is rethrown.
+ */
+export function writeMesh(
+  mesh: Mesh,
+  format: MeshFormat,
+  onChunk: (chunk: Uint8Array) => void,
+  chunkBytes: number = DEFAULT_CHUNK_BYTES,
+): void {
+  if (!Number.isInteger(chunkBytes) || chunkBytes < MIN_CHUNK_BYTES || chunkBytes > MAX_CHUNK_BYTES) {
+    throw new SubdivError(
+      'invalid_argument',
+      `chunkBytes must be a whole number from ${MIN_CHUNK_BYTES} to ${MAX_CHUNK_BYTES}, not ${chunkBytes}.`,
+    );
+  }
+  let stopped: { error: unknown } | null = null;
+  const result = module().write_mesh(mesh, format, chunkBytes, (chunk) => {
+    try {
+      onChunk(chunk);
+      return true;
+    } catch (error) {
+      stopped = { error };
+      return false;
+    }
+  });
+  unwrap(result);
+  if (stopped) throw (stopped as { error: unknown }).error;
+}
+
+/** The pieces of {@link writeMesh}, collected: what an export saves as a Blob. */
+export function exportMeshChunks(mesh: Mesh, format: MeshFormat, chunkBytes?: number): Uint8Array[] {
+  const chunks: Uint8Array[] = [];
+  writeMesh(mesh, format, (chunk) => chunks.push(chunk), chunkBytes);
+  return chunks;
+}
+
+/**
+ * OFF or OBJ text of `mesh` as one string; coordinates round-trip exactly.
+ * A text beyond JavaScript's string limit (about 512 M characters) cannot be
+ * one string: use {@link writeMesh} or {@link exportMeshChunks} for those.
+ */
 export function exportMesh(mesh: Mesh, format: MeshFormat): string {
-  return unwrap(module().write_mesh(mesh, format)).text;
+  const decoder = new TextDecoder();
+  return exportMeshChunks(mesh, format)
+    .map((chunk) => decoder.decode(chunk))
+    .join('');
 }
 
 /**

@@ -5,7 +5,16 @@
  */
 import type { Mesh } from './mesh';
 import { renderBuffers } from './render-buffers';
-import { checkRules, exportMesh, init, meshFacts, parseMesh, predictSize, schemeNames, subdivide } from './subdiv-core';
+import {
+  checkRules,
+  exportMeshChunks,
+  init,
+  meshFacts,
+  parseMesh,
+  predictSize,
+  schemeNames,
+  subdivide,
+} from './subdiv-core';
 import { SubdivError } from './subdiv-error';
 import type {
   LevelData,
@@ -71,7 +80,7 @@ const handlers: Handlers = {
   },
   async export({ mesh, format }) {
     await init();
-    return exportMesh(mesh, format);
+    return exportMeshChunks(mesh, format);
   },
   async checkRules({ rules }) {
     await init();
@@ -85,7 +94,7 @@ scope.onmessage = async (event) => {
   try {
     const handler = handlers[kind] as (a: typeof args) => Promise<unknown>;
     const value = await handler(args);
-    const transfer = isLevelData(value) ? buffersOf(value) : [];
+    const transfer = isLevelData(value) ? buffersOf(value) : isChunkList(value) ? value.map((c) => c.buffer) : [];
     scope.postMessage({ id, ok: true, value }, { transfer });
   } catch (error) {
     const data =
@@ -95,6 +104,11 @@ scope.onmessage = async (event) => {
     scope.postMessage({ id, ok: false, error: data });
   }
 };
+
+/** An export's pieces: each owns its buffer (copied out of the heap), so all can be transferred. */
+function isChunkList(value: unknown): value is Uint8Array[] {
+  return Array.isArray(value) && value.every((chunk) => chunk instanceof Uint8Array);
+}
 
 function isLevelData(value: unknown): value is LevelData {
   return typeof value === 'object' && value !== null && 'buffers' in value && 'mesh' in value;

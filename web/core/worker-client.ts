@@ -258,8 +258,8 @@ export class CoreSession {
     return this.client.request(this, 'predict', { mesh, options });
   }
 
-  /** OFF or OBJ text of `mesh`. */
-  exportMesh(mesh: Mesh, format: MeshFormat): Promise<string> {
+  /** OFF or OBJ text of `mesh`, in pieces (see writeMesh) to join into a Blob or a file. */
+  exportMesh(mesh: Mesh, format: MeshFormat): Promise<Uint8Array[]> {
     return this.client.request(this, 'export', { mesh, format });
   }
 

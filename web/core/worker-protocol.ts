@@ -28,8 +28,8 @@ export interface WorkerRequests {
   subdivide: { args: { mesh: Mesh; options: SubdivideOptions }; result: LevelData };
   /** Predicted counts and peak bytes of a step, without subdividing. */
   predict: { args: { mesh: Mesh; options: SubdivideOptions }; result: SizePrediction };
-  /** OFF/OBJ text of a mesh. */
-  export: { args: { mesh: Mesh; format: MeshFormat }; result: string };
+  /** OFF/OBJ text of a mesh, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */
+  export: { args: { mesh: Mesh; format: MeshFormat }; result: Uint8Array[] };
   /** The core's verdict on a custom rule set, without a mesh: answers null or fails with its SubdivError. */
   checkRules: { args: { rules: RuleSet }; result: null };
 }

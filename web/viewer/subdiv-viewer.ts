@@ -297,9 +297,13 @@ export class SubdivViewer {
     });
   }
 
-  /** OFF or OBJ text of the shown level. */
-  exportMesh(format: MeshFormat): Promise<string> {
-    return this.core.exportMesh(this.requireLevel().data.mesh, format);
+  /**
+   * OFF or OBJ text of the shown level, as a Blob: assembled from the core's
+   * pieces, so a text beyond a JS string's 512 M characters exports too.
+   */
+  async exportMesh(format: MeshFormat): Promise<Blob> {
+    const chunks = await this.core.exportMesh(this.requireLevel().data.mesh, format);
+    return new Blob(chunks as BlobPart[], { type: 'text/plain' });
   }
 
   /** The mesh of the shown level (null before a load). */

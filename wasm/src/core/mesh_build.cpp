@@ -156,13 +156,23 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
                                std::to_string(nv) + " vertices)");
         }
       }
-      scratch.assign(idx.begin() + o, idx.begin() + o + k);
-      std::sort(scratch.begin(), scratch.end());
-      auto dup = std::adjacent_find(scratch.begin(), scratch.end());
-      if (dup != scratch.end()) {
+      // The smallest vertex the face repeats: pairs for small faces, a
+      // sorted copy for large ones.
+      std::uint32_t dup = 0xffffffffu;
+      if (k <= 8) {
+        for (std::uint32_t a = o; a + 1 < o + k; ++a)
+          for (std::uint32_t b = a + 1; b < o + k; ++b)
+            if (idx[a] == idx[b] && idx[a] < dup) dup = idx[a];
+      } else {
+        scratch.assign(idx.begin() + o, idx.begin() + o + k);
+        std::sort(scratch.begin(), scratch.end());
+        const auto it = std::adjacent_find(scratch.begin(), scratch.end());
+        if (it != scratch.end()) dup = *it;
+      }
+      if (dup != 0xffffffffu) {
         return name.fail(
             f, (name.by_line() ? std::string("the face") : name.face(f)) +
-                   " uses vertex " + name.vertex(*dup) + " more than once");
+                   " uses vertex " + name.vertex(dup) + " more than once");
       }
       o += k;
     }
@@ -178,15 +188,34 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
     return c + 1 < offset[f] + sizes[f] ? c + 1 : offset[f];
   };
 
-  // Edges: group the half-edges by undirected edge, in corner order.
+  // Edges: group the half-edges by undirected edge, in corner order, i.e.
+  // sorted by (key, corner): a counting sort by the smaller vertex (stable,
+  // so corners stay in order), then an insertion sort of each vertex's few
+  // half-edges by key.
   std::vector<Half_edge> he(idx.size());
-  for (std::uint32_t c = 0; c < idx.size(); ++c) {
-    const std::uint64_t a = idx[c], b = idx[next_corner(c)];
-    he[c] = {(std::min(a, b) << 32) | std::max(a, b), c};
+  {
+    std::vector<std::uint32_t> bucket(nv + 1, 0);
+    for (std::uint32_t c = 0; c < idx.size(); ++c)
+      ++bucket[std::min(idx[c], idx[next_corner(c)]) + 1];
+    for (std::size_t v = 0; v < nv; ++v) bucket[v + 1] += bucket[v];
+    for (std::uint32_t c = 0; c < idx.size(); ++c) {
+      const std::uint64_t a = idx[c], b = idx[next_corner(c)];
+      he[bucket[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b),
+                                      c};
+    }
+    // bucket[v] is now where vertex v's half-edges end.
+    std::size_t begin = 0;
+    for (std::size_t v = 0; v < nv; ++v) {
+      const std::size_t end = bucket[v];
+      for (std::size_t i = begin + 1; i < end; ++i) {
+        const Half_edge h = he[i];
+        std::size_t j = i;
+        for (; j > begin && he[j - 1].key > h.key; --j) he[j] = he[j - 1];
+        he[j] = h;
+      }
+      begin = end;
+    }
   }
-  std::sort(he.begin(), he.end(), [](const Half_edge& x, const Half_edge& y) {
-    return x.key != y.key ? x.key < y.key : x.corner < y.corner;
-  });
 
   // An edge of 3+ faces, reported where its third face appears.
   std::size_t best = npos, best_begin = 0, best_end = 0;
@@ -254,14 +283,13 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
     const std::uint32_t b = start[v], e = start[v + 1];
     if (e - b < 2) continue;
     const std::uint32_t root = uf.find(corners[b]);  // fan of the first corner
-    std::vector<std::uint32_t> roots;
     std::uint32_t other = 0xffffffffu;  // first corner in another fan
-    for (std::uint32_t i = b; i < e; ++i) {
-      const std::uint32_t r = uf.find(corners[i]);
-      roots.push_back(r);
-      if (r != root && other == 0xffffffffu) other = corners[i];
+    for (std::uint32_t i = b; i < e && other == 0xffffffffu; ++i) {
+      if (uf.find(corners[i]) != root) other = corners[i];
     }
     if (other == 0xffffffffu) continue;
+    std::vector<std::uint32_t> roots;
+    for (std::uint32_t i = b; i < e; ++i) roots.push_back(uf.find(corners[i]));
     std::sort(roots.begin(), roots.end());
     const auto fans = std::unique(roots.begin(), roots.end()) - roots.begin();
     return name.fail(face_of[other],
@@ -274,7 +302,7 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
   return {};
 }
 
-Mesh_buffers drop_isolated_vertices(const Mesh_buffers& in) {
+Mesh_buffers drop_isolated_vertices(Mesh_buffers in) {
   const std::size_t nv = in.vertex_count();
   std::vector<std::uint32_t> map(nv, 0xffffffffu);
   for (auto v : in.face_indices) map[v] = 0;

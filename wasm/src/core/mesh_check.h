@@ -37,9 +37,10 @@ Check_result check_buffers(const Mesh_buffers& in,
                            const Check_naming& naming = {});
 
 /// Copy of `in` without the vertices no face uses; the others keep their
-/// relative order. Returns `in` unchanged (as a copy) when all are used.
-/// Precondition: check_buffers(in) succeeded. control_edges are remapped and
-/// pairs touching a dropped vertex are removed.
-Mesh_buffers drop_isolated_vertices(const Mesh_buffers& in);
+/// relative order. Returns `in` itself (moved, not copied, when passed as an
+/// rvalue) when all are used. Precondition: check_buffers(in) succeeded.
+/// control_edges are remapped and pairs touching a dropped vertex are
+/// removed.
+Mesh_buffers drop_isolated_vertices(Mesh_buffers in);
 
 }  // namespace subdivlab::detail

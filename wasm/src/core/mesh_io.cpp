@@ -6,19 +6,35 @@
 // parsing, the buffers go through the same checks as build_mesh
 // (detail::check_buffers) with faces named by their lines, and isolated
 // vertices are dropped as build_mesh drops them.
+//
+// Speed: each data line is first read by a fast path that walks its bytes
+// once (numbers by fast_float, indices by a digit loop) and accepts only the
+// common, valid shapes of a line. Anything else - signs on indices, colours
+// it does not expect, a bad token, a short line - is read again by the
+// general path (the line split into tokens), which either accepts it or says
+// what is wrong. The general path is the reference; the fast path must give
+// the same values whenever it accepts a line.
 
 #include "mesh_io.h"
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <limits>
 #include <new>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
+
+// Correctly rounded decimal -> double (Debian's libfast-float-dev, header
+// only): strtod's results at a fraction of its cost, and em++ 3.1.6's libc++
+// has no floating-point std::from_chars.
+#include <fast_float/fast_float.h>
 
 #include "mesh_check.h"
 
@@ -29,37 +45,67 @@ namespace {
 
 /// Yields the lines of a text: "\n", "\r\n" and lone "\r" end a line, a
 /// leading UTF-8 byte order mark is skipped, and a '#' starts a comment.
+/// Two ways to read a line: next() splits it into tokens; data_line() only
+/// finds it, for a fast path that reads its bytes from cursor() and ends it
+/// with end_line(), or gives up and takes the tokens with take_line().
 class Line_reader {
  public:
-  explicit Line_reader(std::string_view text) : text_(text) {
+  explicit Line_reader(std::string_view text)
+      : text_(text), begin_(text.data()), end_(text.data() + text.size()) {
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
   }
 
   /// Next line that holds anything but blanks and comments; false at the
   /// end. `line` is its 1-based number.
   bool next(std::vector<std::string_view>& tokens, int& line) {
+    if (!data_line(line)) return false;
+    take_line(tokens);
+    return true;
+  }
+
+  /// Finds the next line that holds anything but blanks and comments
+  /// (false at the end); cursor() is then its first non-blank byte. The line
+  /// must be finished with end_line() or take_line().
+  bool data_line(int& line) {
     while (pos_ < text_.size()) {
-      const std::size_t begin = pos_;
-      std::size_t end = begin;
-      while (end < text_.size() && text_[end] != '\n' && text_[end] != '\r')
-        ++end;
-      pos_ = end;
-      if (pos_ < text_.size()) {
-        const bool crlf = text_[pos_] == '\r' && pos_ + 1 < text_.size() &&
-                          text_[pos_ + 1] == '\n';
-        pos_ += crlf ? 2 : 1;
-      }
+      const char* p = begin_ + pos_;
+      const char* q = skip_blanks(p);
       ++line_;
-      std::string_view content = text_.substr(begin, end - begin);
-      const std::size_t hash = content.find('#');
-      if (hash != std::string_view::npos) content = content.substr(0, hash);
-      split(content, tokens);
-      if (!tokens.empty()) {
-        line = line_;
-        return true;
+      if (q == end_ || *q == '\n' || *q == '\r' || *q == '#') {
+        pos_ = after_line(q);
+        continue;
       }
+      line_begin_ = p;
+      cursor_ = q;
+      line = line_;
+      return true;
     }
     return false;
+  }
+
+  const char* cursor() const { return cursor_; }
+  const char* text_end() const { return end_; }
+
+  /// Ends the current line at `p` if only blanks and a comment follow;
+  /// false (nothing consumed) otherwise.
+  bool end_line(const char* p) {
+    p = skip_blanks(p);
+    if (p != end_ && *p != '\n' && *p != '\r' && *p != '#') return false;
+    pos_ = after_line(p);
+    return true;
+  }
+
+  /// The current line's tokens (from its start, whatever a fast path read);
+  /// ends the line.
+  void take_line(std::vector<std::string_view>& tokens) {
+    const char* e = line_begin_;
+    while (e != end_ && *e != '\n' && *e != '\r') ++e;
+    std::string_view content(line_begin_,
+                             static_cast<std::size_t>(e - line_begin_));
+    const std::size_t hash = content.find('#');
+    if (hash != std::string_view::npos) content = content.substr(0, hash);
+    split(content, tokens);
+    pos_ = after_line(e);
   }
 
   /// Number of the last line of the text (where "the file ends").
@@ -68,9 +114,24 @@ class Line_reader {
   /// Bytes not read yet; bounds what any declared count may reserve.
   std::size_t remaining() const { return text_.size() - pos_; }
 
- private:
   static bool is_blank(char c) {
-    return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r';
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+  }
+  /// Whether a token ends before `p`: a blank, the line's end or a comment.
+  bool token_ends(const char* p) const {
+    return p == end_ || is_blank(*p) || *p == '\n' || *p == '\r' || *p == '#';
+  }
+  const char* skip_blanks(const char* p) const {
+    while (p != end_ && is_blank(*p)) ++p;
+    return p;
+  }
+
+ private:
+  /// Offset of the line after the one `p` is in (past its terminator).
+  std::size_t after_line(const char* p) const {
+    while (p != end_ && *p != '\n' && *p != '\r') ++p;
+    if (p != end_) p += (*p == '\r' && p + 1 != end_ && p[1] == '\n') ? 2 : 1;
+    return static_cast<std::size_t>(p - begin_);
   }
   static void split(std::string_view s, std::vector<std::string_view>& tokens) {
     tokens.clear();
@@ -84,40 +145,62 @@ class Line_reader {
   }
 
   std::string_view text_;
+  const char* begin_;
+  const char* end_;
   std::size_t pos_ = 0;
   int line_ = 0;
+  const char* line_begin_ = nullptr;
+  const char* cursor_ = nullptr;
 };
 
 enum class Number { ok, not_number, not_finite };
 
+/// fast_float on [p, end) after an optional '+' (which it does not take);
+/// where the number ends, or nullptr. A value beyond the double range
+/// comes back infinite.
+const char* scan_double(const char* p, const char* end, double& out) {
+  if (p != end && *p == '+') {
+    ++p;
+    if (p != end && (*p == '+' || *p == '-')) return nullptr;
+  }
+  const fast_float::from_chars_result r = fast_float::from_chars(p, end, out);
+  if (r.ec == std::errc::result_out_of_range) {
+    out = std::numeric_limits<double>::infinity();
+    return r.ptr;
+  }
+  return r.ec == std::errc() ? r.ptr : nullptr;
+}
+
+/// Whether `tok` spells inf, infinity, nan or nan(...), any case, signed.
+bool is_inf_or_nan(std::string_view tok) {
+  if (!tok.empty() && (tok[0] == '+' || tok[0] == '-')) tok.remove_prefix(1);
+  const auto lower_is = [&tok](std::string_view word) {
+    if (tok.size() < word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i) {
+      const auto c = static_cast<unsigned char>(tok[i]);
+      if (std::tolower(c) != word[i]) return false;
+    }
+    return true;
+  };
+  if (tok.size() == 3 && (lower_is("inf") || lower_is("nan"))) return true;
+  if (tok.size() == 8 && lower_is("infinity")) return true;
+  return lower_is("nan(");
+}
+
 /// Strict decimal floating point: the whole token must be a number such as
 /// "1", "-0.5", "1e5" or ".5". "inf"/"nan" and values beyond the double
 /// range are non-finite; hex floats, "1.2.3" and "abc" are not numbers.
-/// strtod on a bounded, NUL-terminated copy: libc++ in em++ 3.1.6 has no
-/// floating-point std::from_chars.
 Number parse_double(std::string_view tok, double& out) {
   if (tok.empty() || tok.size() > 400) return Number::not_number;
-  std::string_view body = tok;
-  if (body[0] == '+' || body[0] == '-') body.remove_prefix(1);
-  std::string lower(body);
-  for (char& c : lower)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "inf" || lower == "infinity" || lower == "nan" ||
-      lower.rfind("nan(", 0) == 0) {
-    return Number::not_finite;
-  }
+  if (is_inf_or_nan(tok)) return Number::not_finite;
   for (char c : tok) {
     const bool ok = (c >= '0' && c <= '9') || c == '.' || c == 'e' ||
                     c == 'E' || c == '+' || c == '-';
     if (!ok) return Number::not_number;
   }
-  char buf[408];
-  std::copy(tok.begin(), tok.end(), buf);
-  buf[tok.size()] = '\0';
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(buf, &end);
-  if (end != buf + tok.size()) return Number::not_number;
+  double v = 0;
+  const char* end = tok.data() + tok.size();
+  if (scan_double(tok.data(), end, v) != end) return Number::not_number;
   if (!std::isfinite(v)) return Number::not_finite;
   out = v;
   return Number::ok;
@@ -139,6 +222,128 @@ bool parse_int(std::string_view tok, long long& out) {
   }
   out = neg ? -v : v;
   return true;
+}
+
+// ------------------------------------------------------- fast path
+
+/// A number as parse_double reads it, found at `p`: a finite value whose
+/// token ends where the number does. nullptr for anything else (the line is
+/// then read again by the general path).
+const char* fast_number(const Line_reader& in, const char* p, double& out) {
+  const char* e = scan_double(p, in.text_end(), out);
+  if (e == nullptr || e - p > 400 || !in.token_ends(e) || !std::isfinite(out))
+    return nullptr;
+  return e;
+}
+
+/// Unsigned digits at `p` (at most 10, no sign); where they end or nullptr.
+const char* scan_digits(const char* p, const char* end, std::uint64_t& out) {
+  const char* const start = p;
+  std::uint64_t v = 0;
+  while (p != end && static_cast<unsigned char>(*p - '0') < 10) {
+    v = v * 10 + static_cast<unsigned>(*p - '0');
+    if (++p - start > 10) return nullptr;
+  }
+  if (p == start) return nullptr;
+  out = v;
+  return p;
+}
+
+/// After the values a line must have: up to `max_extra` more finite numbers
+/// (0 for no limit), then the end of the line. Ends the line; false
+/// (nothing consumed) when something else follows.
+bool fast_extras(Line_reader& in, const char* p, std::size_t max_extra,
+                 std::size_t& extra) {
+  extra = 0;
+  for (;;) {
+    const char* q = in.skip_blanks(p);
+    if (in.token_ends(q)) break;
+    if (max_extra != 0 && extra == max_extra) return false;
+    double x = 0;
+    p = fast_number(in, q, x);
+    if (p == nullptr) return false;
+    ++extra;
+  }
+  return in.end_line(p);
+}
+
+/// An OFF or OBJ vertex line's x y z at `p`, then at least `min_extra`
+/// further numbers; appends x y z and ends the line, or returns false.
+bool fast_vertex(Line_reader& in, const char* p, std::size_t min_extra,
+                 std::vector<double>& positions) {
+  double x[3];
+  for (int a = 0; a < 3; ++a) {
+    p = fast_number(in, in.skip_blanks(p), x[a]);
+    if (p == nullptr) return false;
+  }
+  std::size_t extra = 0;
+  if (!fast_extras(in, p, 0, extra) || extra < min_extra) return false;
+  positions.insert(positions.end(), x, x + 3);
+  return true;
+}
+
+/// An OFF face line "k i1 .. ik [colour]" with plain indices below `nv`;
+/// appends the indices and returns k, or returns -1 (nothing appended, the
+/// line not ended).
+long long fast_off_face(Line_reader& in, std::size_t nv,
+                        std::vector<std::uint32_t>& indices) {
+  const char* const end = in.text_end();
+  std::uint64_t k = 0;
+  const char* p = scan_digits(in.cursor(), end, k);
+  if (p == nullptr || !in.token_ends(p)) return -1;
+  const std::size_t start = indices.size();
+  for (std::uint64_t i = 0; i < k; ++i) {
+    std::uint64_t v = 0;
+    const char* e = scan_digits(in.skip_blanks(p), end, v);
+    if (e == nullptr || !in.token_ends(e) || v >= nv) {
+      indices.resize(start);
+      return -1;
+    }
+    indices.push_back(static_cast<std::uint32_t>(v));
+    p = e;
+  }
+  std::size_t extra = 0;
+  if (!fast_extras(in, p, 4, extra)) {
+    indices.resize(start);
+    return -1;
+  }
+  return static_cast<long long>(k);
+}
+
+/// An OBJ face line's corners after "f" at `p`, each a positive v, v/vt,
+/// v//vn or v/vt/vn without signs; appends v - 1 for each and returns the
+/// count, or -1 (nothing appended, the line not ended).
+long long fast_obj_face(Line_reader& in, const char* p,
+                        std::vector<std::uint32_t>& indices) {
+  const char* const end = in.text_end();
+  const std::size_t start = indices.size();
+  const auto fail = [&] {
+    indices.resize(start);
+    return -1;
+  };
+  long long corners = 0;
+  for (;;) {
+    p = in.skip_blanks(p);
+    if (in.token_ends(p)) break;
+    std::uint64_t v = 0, unused = 0;
+    p = scan_digits(p, end, v);
+    if (p == nullptr || v == 0 || v - 1 >= 0xffffffffull) return fail();
+    if (p != end && *p == '/') {
+      const char* vt = scan_digits(p + 1, end, unused);
+      const char* q = vt != nullptr ? vt : p + 1;
+      if (q != end && *q == '/') {
+        p = scan_digits(q + 1, end, unused);  // v//vn or v/vt/vn
+      } else {
+        p = vt;  // v/vt
+      }
+      if (p == nullptr) return fail();
+    }
+    if (!in.token_ends(p)) return fail();
+    indices.push_back(static_cast<std::uint32_t>(v - 1));
+    ++corners;
+  }
+  if (!in.end_line(p)) return fail();
+  return corners;
 }
 
 std::string at(int line) { return "line " + std::to_string(line) + ": "; }
@@ -208,7 +413,7 @@ Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
     r.status = std::move(check.status);
     return r;
   }
-  r.value = detail::drop_isolated_vertices(mesh);
+  r.value = detail::drop_isolated_vertices(std::move(mesh));
   return r;
 }
 
@@ -295,11 +500,13 @@ Result<Mesh_buffers> read_off(std::string_view text) {
   const std::size_t min_values =
       3 + (normals ? 3 : 0) + (colours ? 3 : 0) + (texture ? 2 : 0);
   for (std::size_t v = 0; v < nv; ++v) {
-    if (!in.next(tok, line)) {
+    if (!in.data_line(line)) {
       return parse_fail(in.last_line(), "file ends after " + std::to_string(v) +
                                             " of " + std::to_string(nv) +
                                             " vertices");
     }
+    if (fast_vertex(in, in.cursor(), min_values - 3, mesh.positions)) continue;
+    in.take_line(tok);
     if (tok.size() < min_values) {
       std::string need = "x y z";
       if (normals) need += ", a normal";
@@ -334,11 +541,18 @@ Result<Mesh_buffers> read_off(std::string_view text) {
   }
 
   for (std::size_t f = 0; f < nf; ++f) {
-    if (!in.next(tok, line)) {
+    if (!in.data_line(line)) {
       return parse_fail(in.last_line(), "file ends after " + std::to_string(f) +
                                             " of " + std::to_string(nf) +
                                             " faces");
     }
+    const long long fast_k = fast_off_face(in, nv, mesh.face_indices);
+    if (fast_k >= 0) {
+      mesh.face_sizes.push_back(static_cast<std::uint32_t>(fast_k));
+      face_lines.push_back(line);
+      continue;
+    }
+    in.take_line(tok);
     long long k = 0;
     if (!parse_int(tok[0], k) || k < 0) {
       return parse_fail(line, "face " + std::to_string(f) +
@@ -436,7 +650,20 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
   int line = 0;
   Mesh_buffers mesh;
   std::vector<int> face_lines;
-  while (in.next(tok, line)) {
+  while (in.data_line(line)) {
+    const char* c = in.cursor();
+    if (c + 1 != in.text_end() && Line_reader::is_blank(c[1])) {
+      if (*c == 'v' && fast_vertex(in, c + 1, 0, mesh.positions)) continue;
+      if (*c == 'f') {
+        const long long corners = fast_obj_face(in, c + 1, mesh.face_indices);
+        if (corners >= 0) {
+          mesh.face_sizes.push_back(static_cast<std::uint32_t>(corners));
+          face_lines.push_back(line);
+          continue;
+        }
+      }
+    }
+    in.take_line(tok);
     const std::string_view k = tok[0];
     if (k == "v") {
       if (tok.size() < 4) {
@@ -525,18 +752,184 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
 
 // ---------------------------------------------------------------- writing
 
-void append_number(std::string& out, double x) {
-  char buf[32];
-  const int n = std::snprintf(buf, sizeof buf, "%.17g", x);
-  out.append(buf, static_cast<std::size_t>(n));
+/// The 17 significant digits of x > 0 as printf's "%.17g" rounds them
+/// (exactly, ties to even): x ~ d * 10^(e10 - 16) with 10^16 <= d < 10^17.
+/// Exact 128-bit arithmetic covers [1e-5, 1e17), where mesh coordinates
+/// live; false outside it (the caller then asks snprintf). printf itself
+/// costs about ten times as much per number, and em++ 3.1.6's libc++ has no
+/// floating-point std::to_chars.
+bool decimal_digits_17(double x, std::uint64_t& d, int& e10) {
+  if (!(x >= 1e-5 && x < 1e17)) return false;
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = static_cast<int>(bits >> 52);  // x >= 1e-5: normal
+  const std::uint64_t f = (bits & ((1ull << 52) - 1)) | (1ull << 52);
+  const int e2 = biased - 1075;  // x = f * 2^e2
+  static const std::uint64_t pow5[] = {1ull,
+                                       5ull,
+                                       25ull,
+                                       125ull,
+                                       625ull,
+                                       3125ull,
+                                       15625ull,
+                                       78125ull,
+                                       390625ull,
+                                       1953125ull,
+                                       9765625ull,
+                                       48828125ull,
+                                       244140625ull,
+                                       1220703125ull,
+                                       6103515625ull,
+                                       30517578125ull,
+                                       152587890625ull,
+                                       762939453125ull,
+                                       3814697265625ull,
+                                       19073486328125ull,
+                                       95367431640625ull,
+                                       476837158203125ull,
+                                       2384185791015625ull};
+  constexpr std::uint64_t ten16 = 10000000000000000ull;
+  // floor(log10(x)) from the binary exponent (log10(2) ~ 78913 / 2^18),
+  // corrected by the loop when it is one off.
+  int e = ((biased - 1023) * 78913) >> 18;
+  for (int tries = 0; tries < 4; ++tries) {
+    const int k = 16 - e;  // y = x * 10^k = f * 5^k * 2^(e2 + k)
+    if (k < 0 || k > 22) return false;
+    const unsigned __int128 m = static_cast<unsigned __int128>(f) * pow5[k];
+    const int s = e2 + k;
+    std::uint64_t q = 0;
+    bool half = false, above = false;  // the dropped bits vs one half
+    if (s >= 0) {
+      if (s > 10) return false;
+      q = static_cast<std::uint64_t>(m << s);
+    } else {
+      const int r = -s;
+      if (r >= 120) return false;
+      const unsigned __int128 whole = m >> r;
+      const unsigned __int128 rest = m - (whole << r);
+      const unsigned __int128 one_half = static_cast<unsigned __int128>(1)
+                                         << (r - 1);
+      half = rest == one_half;
+      above = rest > one_half;
+      q = static_cast<std::uint64_t>(whole);
+    }
+    if (q < ten16) {
+      --e;
+      continue;
+    }
+    if (q >= 10 * ten16) {
+      ++e;
+      continue;
+    }
+    if (above || (half && (q & 1))) ++q;
+    if (q == 10 * ten16) {
+      q = ten16;
+      ++e;
+    }
+    d = q;
+    e10 = e;
+    return true;
+  }
+  return false;
 }
 
-void append_uint(std::string& out, std::uint64_t x) {
-  char buf[24];
-  const int n = std::snprintf(buf, sizeof buf, "%llu",
-                              static_cast<unsigned long long>(x));
-  out.append(buf, static_cast<std::size_t>(n));
+/// x as printf("%.17g", x) writes it, at `out`; returns the end (at most 24
+/// characters later).
+char* write_g17(double x, char* out) {
+  std::uint64_t d = 0;
+  int e = 0;
+  if (x == 0 || !decimal_digits_17(std::fabs(x), d, e)) {
+    return out + std::snprintf(out, 32, "%.17g", x);
+  }
+  if (std::signbit(x)) *out++ = '-';
+  char digit[17];
+  auto high = static_cast<std::uint32_t>(d / 100000000u);
+  auto low = static_cast<std::uint32_t>(d % 100000000u);
+  for (int i = 16; i >= 9; --i, low /= 10)
+    digit[i] = static_cast<char>('0' + low % 10);
+  for (int i = 8; i >= 0; --i, high /= 10)
+    digit[i] = static_cast<char>('0' + high % 10);
+  int n = 17;
+  while (n > 1 && digit[n - 1] == '0') --n;  // %g drops trailing zeros
+  if (e < -4) {  // d.ddde-05: the only exponent form in range
+    *out++ = digit[0];
+    if (n > 1) {
+      *out++ = '.';
+      std::memcpy(out, digit + 1, n - 1);
+      out += n - 1;
+    }
+    *out++ = 'e';
+    *out++ = '-';
+    *out++ = static_cast<char>('0' + (-e) / 10);
+    *out++ = static_cast<char>('0' + (-e) % 10);
+    return out;
+  }
+  if (e < 0) {  // 0.000ddd
+    *out++ = '0';
+    *out++ = '.';
+    for (int i = 0; i < -e - 1; ++i) *out++ = '0';
+    std::memcpy(out, digit, n);
+    return out + n;
+  }
+  const int whole = e + 1;  // e <= 16
+  std::memcpy(out, digit, whole);
+  out += whole;
+  if (n > whole) {
+    *out++ = '.';
+    std::memcpy(out, digit + whole, n - whole);
+    out += n - whole;
+  }
+  return out;
 }
+
+char* write_uint(std::uint64_t x, char* out) {
+  char buf[20];
+  int n = 0;
+  do {
+    buf[n++] = static_cast<char>('0' + x % 10);
+    x /= 10;
+  } while (x != 0);
+  while (n > 0) *out++ = buf[--n];
+  return out;
+}
+
+/// Text collected in a buffer of `capacity` bytes and handed to the sink
+/// whenever the next token might not fit.
+class Chunk_writer {
+ public:
+  /// Longest piece put() may be asked for: a number with its separator.
+  static constexpr std::size_t max_piece = 32;
+
+  Chunk_writer(std::size_t capacity, const Chunk_sink& sink)
+      : buffer_(capacity), sink_(sink) {}
+
+  /// Where the next piece (at most max_piece bytes) goes; commit() its end.
+  char* reserve() {
+    if (buffer_.size() - used_ < max_piece) flush();
+    return buffer_.data() + used_;
+  }
+  void commit(char* end) {
+    used_ = static_cast<std::size_t>(end - buffer_.data());
+  }
+  bool ok() const { return ok_; }
+
+  /// Hands over what is left; false if the sink stopped the writing.
+  bool finish() {
+    flush();
+    return ok_;
+  }
+
+ private:
+  void flush() {
+    if (used_ > 0 && ok_) ok_ = sink_(std::string_view(buffer_.data(), used_));
+    used_ = 0;
+  }
+
+  std::vector<char> buffer_;
+  std::size_t used_ = 0;
+  const Chunk_sink& sink_;
+  bool ok_ = true;
+};
 
 }  // namespace
 
@@ -588,42 +981,69 @@ Status check_writable(const Mesh_buffers& mesh) {
   return Status::success();
 }
 
-std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format) {
-  std::string out;
+bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
+                       std::size_t max_chunk_bytes, const Chunk_sink& sink) {
+  Chunk_writer out(std::max(max_chunk_bytes, min_chunk_bytes), sink);
   const std::size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-  out.reserve(nv * 60 + mesh.face_indices.size() * 8 + nf * 4 + 32);
   const bool off = format == Mesh_format::off;
   if (off) {
-    out += "OFF\n";
-    append_uint(out, nv);
-    out += ' ';
-    append_uint(out, nf);
-    out += " 0\n";
+    char* p = out.reserve();
+    std::memcpy(p, "OFF\n", 4);
+    out.commit(p + 4);
+    p = write_uint(nv, out.reserve());
+    *p++ = ' ';
+    out.commit(p);
+    p = write_uint(nf, out.reserve());
+    std::memcpy(p, " 0\n", 3);
+    out.commit(p + 3);
   }
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (!off) out += "v ";
-    for (int a = 0; a < 3; ++a) {
-      if (a > 0) out += ' ';
-      append_number(out, mesh.positions[3 * v + a]);
-    }
-    out += '\n';
+  const double* xyz = mesh.positions.data();
+  for (std::size_t v = 0; v < nv && out.ok(); ++v, xyz += 3) {
+    char* p = out.reserve();
+    if (!off) *p++ = 'v', *p++ = ' ';
+    p = write_g17(xyz[0], p);
+    *p++ = ' ';
+    out.commit(p);
+    p = write_g17(xyz[1], out.reserve());
+    *p++ = ' ';
+    out.commit(p);
+    p = write_g17(xyz[2], out.reserve());
+    *p++ = '\n';
+    out.commit(p);
   }
-  std::size_t o = 0;
-  for (std::size_t f = 0; f < nf; ++f) {
+  const std::uint32_t* index = mesh.face_indices.data();
+  const std::uint64_t base = off ? 0 : 1;
+  for (std::size_t f = 0; f < nf && out.ok(); ++f) {
     const std::uint32_t k = mesh.face_sizes[f];
+    char* p = out.reserve();
     if (off) {
-      append_uint(out, k);
+      p = write_uint(k, p);
     } else {
-      out += 'f';
+      *p++ = 'f';
     }
     for (std::uint32_t i = 0; i < k; ++i) {
-      out += ' ';
-      append_uint(out, std::uint64_t(mesh.face_indices[o + i]) + (off ? 0 : 1));
+      *p++ = ' ';
+      p = write_uint(base + index[i], p);
+      out.commit(p);
+      p = out.reserve();
     }
-    o += k;
-    out += '\n';
+    *p++ = '\n';
+    out.commit(p);
+    index += k;
   }
-  return out;
+  return out.finish();
+}
+
+std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format) {
+  std::string text;
+  text.reserve(mesh.vertex_count() * 60 + mesh.face_indices.size() * 8 +
+               mesh.face_count() * 4 + 32);
+  write_mesh_chunks(mesh, format, std::size_t{1} << 16,
+                    [&text](std::string_view chunk) {
+                      text.append(chunk);
+                      return true;
+                    });
+  return text;
 }
 
 }  // namespace subdivlab

@@ -1,6 +1,8 @@
 // Reading and writing OFF and OBJ text. Owner: mesh_io.cpp.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -26,8 +28,24 @@ Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format);
 /// core. Fails with invalid_mesh.
 Status check_writable(const Mesh_buffers& mesh);
 
-/// OFF / OBJ text of the mesh. Coordinates are written with 17 significant
-/// digits so that reading the text back gives the same doubles.
+/// Takes one piece of written text; returns false to stop the writing.
+using Chunk_sink = std::function<bool(std::string_view)>;
+
+/// Smallest chunk write_mesh_chunks makes room for (a smaller bound is
+/// raised to it).
+constexpr std::size_t min_chunk_bytes = 64;
+
+/// OFF / OBJ text of the mesh, handed to `sink` in consecutive pieces of at
+/// most max(max_chunk_bytes, min_chunk_bytes) bytes (a piece may end inside
+/// a line; the pieces joined are write_mesh's text), so that a text larger
+/// than any one string or buffer can be saved. Returns false if the sink
+/// stopped it. Precondition: check_writable(mesh) succeeds.
+bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
+                       std::size_t max_chunk_bytes, const Chunk_sink& sink);
+
+/// OFF / OBJ text of the mesh. Coordinates are written as printf's "%.17g"
+/// writes them (17 significant digits) so that reading the text back gives
+/// the same doubles.
 /// Precondition: check_writable(mesh) succeeds (else it reads past the
 /// index array).
 std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format);
