@@ -18,6 +18,7 @@
 #include "core/custom_rules.h"
 #include "core/linear_masks_3.h"
 #include "core/mesh_build.h"
+#include "core/mesh_check.h"
 #include "core/mesh_io.h"
 #include "core/subdivide.h"
 #include "core/table_masks_3.h"
@@ -106,6 +107,34 @@ const char* const kAnyFaces[] = {
     "icosahedron.off", "rhombicuboctahedron.off", "torus-quad.off",
     "torus-tri.off",   "two-tetrahedra.off",      "disk-tri.off",
     "grid-open.off",   "mixed-open.off"};
+
+TEST(FastPrimalHosts, LevelFromBuffersEqualsTheSurfaceMeshBuildMeshBuilds) {
+  // Surface_mesh::add_face's numbering, worked out without the mesh; the
+  // last case has an isolated vertex (dropped) and mixed degrees.
+  std::vector<Mesh_buffers> cases;
+  for (const char* f : kAnyFaces) cases.push_back(to_buffers(load(f, false)));
+  Mesh_buffers odd = cases.back();
+  odd.positions.insert(odd.positions.begin(), {9.0, 9.0, 9.0});
+  for (std::uint32_t& v : odd.face_indices) ++v;
+  cases.push_back(odd);
+  for (const Mesh_buffers& in : cases) {
+    std::vector<std::uint32_t> corner_halfedges;
+    ASSERT_TRUE(detail::check_buffers(in, {}, &corner_halfedges).status.ok());
+    const refine::Level got = refine::level_from_buffers(in, corner_halfedges);
+    Mesh m;
+    ASSERT_TRUE(build_mesh(in, m).ok());
+    const refine::Level want = refine::level_from_mesh(m);
+    EXPECT_EQ(got.vertex_count, want.vertex_count);
+    EXPECT_EQ(got.edge_count, want.edge_count);
+    EXPECT_EQ(got.border_edge_count, want.border_edge_count);
+    EXPECT_EQ(got.uniform_degree, want.uniform_degree);
+    EXPECT_EQ(got.face_offsets, want.face_offsets);
+    EXPECT_EQ(got.face_halfedges, want.face_halfedges);
+    EXPECT_EQ(got.halfedge_target, want.halfedge_target);
+    EXPECT_EQ(got.halfedge_corner, want.halfedge_corner);
+    EXPECT_EQ(got.positions, want.positions);
+  }
+}
 
 TEST(FastPrimalHosts, CatmullClarkAndLinearEqualCgal) {
   for (const char* f : kAnyFaces) {

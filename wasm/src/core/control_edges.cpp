@@ -21,6 +21,20 @@ bool scheme_keeps_control_edges(const Subdivide_options& o) {
 
 Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
                                             const Mesh& mesh, int start_level) {
+  return initial_control_edges(
+      in, mesh.num_edges(),
+      [&](std::uint32_t a, std::uint32_t b) {
+        const Mesh::Halfedge_index h = mesh.halfedge(vertex(a), vertex(b));
+        return h == Mesh::null_halfedge() ? kNoEdge
+                                          : std::uint32_t{mesh.edge(h).idx()};
+      },
+      start_level);
+}
+
+Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
+                                            std::size_t edge_count,
+                                            const Edge_finder& edge_of,
+                                            int start_level) {
   Result<Control_edges> r;
   // build_mesh numbers the vertices that faces use, in their buffer order.
   const std::size_t nv = in.vertex_count();
@@ -35,15 +49,15 @@ Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
     // The edges of the faces as given, so that a mesh triangulated before
     // the first step keeps its polygon edges only. A bit per mesh edge
     // finds the duplicates (the memory model counts 8 bytes per mark).
-    std::vector<bool> seen(mesh.num_edges(), false);
+    std::vector<bool> seen(edge_count, false);
     std::size_t o = 0;
     for (std::uint32_t k : in.face_sizes) {
       for (std::uint32_t i = 0; i < k; ++i) {
         const std::uint32_t a = rank[in.face_indices[o + i]];
         const std::uint32_t b = rank[in.face_indices[o + (i + 1) % k]];
-        const Mesh::Halfedge_index h = mesh.halfedge(vertex(a), vertex(b));
-        if (h == Mesh::null_halfedge() || seen[mesh.edge(h).idx()]) continue;
-        seen[mesh.edge(h).idx()] = true;
+        const std::uint32_t e = edge_of(a, b);
+        if (e == kNoEdge || seen[e]) continue;
+        seen[e] = true;
         r.value.emplace_back(a, b);
       }
       o += k;
@@ -60,20 +74,17 @@ Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
                 std::to_string(in.control_edges.size()) + " numbers)");
   r.value.reserve(in.control_edges.size() / 2);
   // A repeated edge would be refined, counted and drawn twice.
-  std::vector<bool> seen(mesh.num_edges(), false);
+  std::vector<bool> seen(edge_count, false);
   for (std::size_t i = 0; i < in.control_edges.size(); i += 2) {
     const std::uint32_t a = in.control_edges[i], b = in.control_edges[i + 1];
     const std::string name = "control edge " + std::to_string(i / 2) + " (" +
                              std::to_string(a) + ", " + std::to_string(b) + ")";
     if (a >= nv || b >= nv || rank[a] == 0xffffffffu || rank[b] == 0xffffffffu)
       return fail(name + " names a vertex that is not in the mesh");
-    const Mesh::Halfedge_index h =
-        mesh.halfedge(vertex(rank[a]), vertex(rank[b]));
-    if (h == Mesh::null_halfedge())
-      return fail(name + " is not an edge of the mesh");
-    if (seen[mesh.edge(h).idx()])
-      return fail(name + " repeats an earlier control edge");
-    seen[mesh.edge(h).idx()] = true;
+    const std::uint32_t e = edge_of(rank[a], rank[b]);
+    if (e == kNoEdge) return fail(name + " is not an edge of the mesh");
+    if (seen[e]) return fail(name + " repeats an earlier control edge");
+    seen[e] = true;
     r.value.emplace_back(rank[a], rank[b]);
   }
   return r;

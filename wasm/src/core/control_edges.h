@@ -3,7 +3,9 @@
 // marked; after a primal step the two halves of a marked edge are marked.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +25,11 @@ using Control_edges = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 /// marks.
 bool scheme_keeps_control_edges(const Subdivide_options& options);
 
+/// The edge between vertices a and b of a mesh, or kNoEdge.
+using Edge_finder =
+    std::function<std::uint32_t(std::uint32_t a, std::uint32_t b)>;
+constexpr std::uint32_t kNoEdge = 0xffffffffu;
+
 /// Control edges of `mesh` (built by build_mesh from `in`) at the start of a
 /// subdivision: `in.control_edges` mapped to mesh vertex indices (build_mesh
 /// drops isolated vertices), or every edge of the faces of `in` when
@@ -33,6 +40,13 @@ bool scheme_keeps_control_edges(const Subdivide_options& options);
 /// range, or not edges of the mesh.
 Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
                                             const Mesh& mesh, int start_level);
+
+/// The same for a mesh given by its edge count and a way to find an edge
+/// (vertices numbered as build_mesh numbers them).
+Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
+                                            std::size_t edge_count,
+                                            const Edge_finder& edge_of,
+                                            int start_level);
 
 /// The children of `parents` after one primal step on `refined`, where the
 /// vertices of the coarse mesh kept their indices and every index from

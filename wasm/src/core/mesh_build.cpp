@@ -98,7 +98,8 @@ struct Half_edge {
 
 }  // namespace
 
-Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
+Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
+                           std::vector<std::uint32_t>* corner_halfedges) {
   const Namer name(naming);
   const auto& sizes = in.face_sizes;
   const auto& idx = in.face_indices;
@@ -298,6 +299,22 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming) {
                          " separate fans that meet only at this vertex (" +
                          name.faces({face_of[corners[b]], face_of[other]}) +
                          ")");
+  }
+  if (corner_halfedges != nullptr) {
+    // he is sorted by (edge, corner): a group's first corner is the edge's
+    // first use. Number those in corner order, then give the second use
+    // the odd halfedge.
+    std::vector<std::uint32_t>& out = *corner_halfedges;
+    constexpr std::uint32_t kFirst = 0xffffffffu;
+    out.assign(idx.size(), 0);
+    for (std::size_t i = 0; i < he.size(); ++i)
+      if (i == 0 || he[i].key != he[i - 1].key) out[he[i].corner] = kFirst;
+    std::uint32_t edges = 0;
+    for (std::uint32_t& h : out)
+      if (h == kFirst) h = 2 * edges++;
+    for (std::size_t i = 1; i < he.size(); ++i)
+      if (he[i].key == he[i - 1].key)
+        out[he[i].corner] = out[he[i - 1].corner] + 1;
   }
   return {};
 }

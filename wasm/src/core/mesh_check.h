@@ -33,8 +33,16 @@ struct Check_result {
 /// indices in range and no repeated vertex, then edges used by at most two
 /// faces, edges used in opposite directions, and vertices whose faces form a
 /// single fan. Isolated vertices are not an error (build_mesh drops them).
-Check_result check_buffers(const Mesh_buffers& in,
-                           const Check_naming& naming = {});
+///
+/// On success, `corner_halfedges` (when given) receives for each corner c
+/// (index into face_indices) the halfedge from its vertex to the next one
+/// as build_mesh's Surface_mesh numbers it: Surface_mesh::add_face creates
+/// an edge where a face first uses it, faces and corners in order, its
+/// halfedge 2e in that first direction, so edge e is the e-th first use
+/// and the other side is 2e + 1.
+Check_result check_buffers(
+    const Mesh_buffers& in, const Check_naming& naming = {},
+    std::vector<std::uint32_t>* corner_halfedges = nullptr);
 
 /// Copy of `in` without the vertices no face uses; the others keep their
 /// relative order. Returns `in` itself (moved, not copied, when passed as an

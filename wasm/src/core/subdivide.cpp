@@ -30,6 +30,7 @@
 #include "dqq_border_3.h"
 #include "linear_masks_3.h"
 #include "mesh_build.h"
+#include "mesh_check.h"
 #include "quad_triangle_3.h"
 #include "refine/level_convert.h"
 #include "refine/primal_hosts.h"
@@ -447,12 +448,22 @@ double fast_step_peak(const std::string& scheme, const Counts& c,
   double peak = base + parent + child +
                 refine::primal_scratch_bytes(
                     c.vertices, scheme == "catmull-clark", c.border_edges > 0);
-  // The control edges as pairs (8 bytes): the input's, as
-  // initial_control_edges grew them, until they are marked in the first
-  // level; the output's, after the last.
-  if (first)
-    peak = std::max(
-        peak, base + caps_bytes(caps) + parent + control_edge_bytes(marks));
+  // Level 0 comes from the buffers (check_buffers' temporaries: 32 bytes
+  // a corner, 8 a vertex, 4 a face; then the level beside the corners'
+  // halfedges and a vertex numbering) or, when it had to be triangulated,
+  // from CGAL's mesh (beside it). Control edges given as pairs are found
+  // through the halfedges around each vertex and held as pairs (8 bytes,
+  // as initial_control_edges grew them) until marked; the output's pairs
+  // come after the last step.
+  if (first) {
+    const double S = c.degree_sum(), V = c.vertices;
+    const double from_buffers =
+        std::max(32 * S + 8 * V + 4 * c.faces, 4 * S + 4 * V + parent);
+    const double from_mesh = caps_bytes(caps) + parent;
+    const double finding = marks > 0 ? 8 * V + 8 * c.edges : 0;
+    peak = std::max(peak, base + std::max(from_buffers, from_mesh) + finding +
+                              control_edge_bytes(marks));
+  }
   if (last)
     peak = std::max(
         peak, base + child + 4 * n.degree_sum() + 4 * n.faces + 8 * 2 * marks);
@@ -756,24 +767,119 @@ Status check_finite_points(const Mesh& mesh, const Mesh_buffers& in,
   return Status::success();
 }
 
-/// Runs the steps of `options` on the fast primal hosts (refine/, `mask`
-/// from refine::primal_mask) from `mesh`, which is freed once its tables
-/// are taken; `control` marks the control edges (when tracked). Each step
-/// is checked against the memory limit first, as the CGAL steps are.
-/// `level` follows the step for messages.
-Status run_primal_steps(Mesh& mesh, const refine::Primal_mask& mask,
-                        Control_edges* control,
-                        const Subdivide_options& options,
-                        const Mesh_buffers& in, Counts counts, double input,
-                        Mesh_buffers& out, int& level) {
-  const Caps mesh_caps = Caps::exact(counts);
-  refine::Level parent = refine::level_from_mesh(mesh);
-  double marks = control != nullptr ? static_cast<double>(control->size()) : 0;
-  if (control != nullptr) {
-    refine::mark_edges(mesh, *control, parent);
-    Control_edges().swap(*control);
+/// Counts of a level (border degrees from its valences).
+Counts counts_of(const refine::Level& l) {
+  Counts c;
+  c.vertices = l.vertex_count;
+  c.edges = l.edge_count;
+  c.faces = l.face_count;
+  c.border_edges = l.border_edge_count;
+  std::vector<std::uint32_t> valence(l.vertex_count, 0);
+  std::vector<bool> border(l.vertex_count, false);
+  const std::uint32_t* t = l.halfedge_target.data();
+  for (std::uint32_t h = 0; h < 2 * l.edge_count; ++h) {
+    ++valence[t[h]];
+    if (l.halfedge_corner[h] == refine::kNone) border[t[h]] = true;
   }
-  mesh = Mesh();
+  for (std::uint32_t v = 0; v < l.vertex_count; ++v) {
+    if (!border[v]) continue;
+    c.border_ears += valence[v] == 2;
+    c.border_fans += valence[v] >= 4;
+  }
+  for (std::uint32_t f = 0; f < l.face_count; ++f) {
+    const std::uint32_t begin = l.face_begin(f), end = l.face_end(f);
+    c.non_triangles += end - begin != 3;
+    c.degree_excess += static_cast<double>(end - begin) - 3;
+    std::uint32_t on_border = 0;
+    for (std::uint32_t i = begin; i < end; ++i)
+      on_border += l.halfedge_corner[l.face_halfedges[i] ^ 1] == refine::kNone;
+    c.multi_border_faces += on_border >= 2;
+  }
+  return c;
+}
+
+/// check_two_valent_vertices on a level (the PTQ schemes refuse an interior
+/// vertex of valence 2).
+Status check_two_valent_vertices(const refine::Level& l,
+                                 const Subdivide_options& options) {
+  if (size_model(options) != "loop") return Status::success();
+  std::vector<std::uint32_t> valence(l.vertex_count, 0);
+  std::vector<bool> border(l.vertex_count, false);
+  const std::uint32_t* t = l.halfedge_target.data();
+  for (std::uint32_t h = 0; h < 2 * l.edge_count; ++h) {
+    ++valence[t[h]];
+    if (l.halfedge_corner[h] == refine::kNone) border[t[h]] = true;
+  }
+  for (std::uint32_t v = 0; v < l.vertex_count; ++v) {
+    if (valence[v] != 2 || border[v]) continue;
+    return Status::error(
+        Status_code::invalid_mesh,
+        options.scheme + " cannot refine vertex " + std::to_string(v) +
+            ": it has only 2 edges, so its two faces share two edges and "
+            "the result would repeat edges (catmull-clark can refine it)");
+  }
+  return Status::success();
+}
+
+/// The level a fast run starts from, its counts and its marked control
+/// edges (`marks` of them). From the buffers directly (check_buffers pairs
+/// the edges as build_mesh's Surface_mesh would number them), or, when
+/// polygons must be triangulated first, from CGAL's triangulated mesh.
+Status prepare_level(const Mesh_buffers& in, const Subdivide_options& options,
+                     refine::Level& level, Counts& counts, double& marks) {
+  Status s = check_options(options);
+  if (!s.ok()) return s;
+  {
+    std::vector<std::uint32_t> corner_halfedges;
+    const detail::Check_result check =
+        detail::check_buffers(in, {}, &corner_halfedges);
+    if (!check.status.ok()) return check.status;
+    level = refine::level_from_buffers(in, corner_halfedges);
+  }
+  counts = counts_of(level);
+  bool all_edges_are_face_edges = true;
+  if (needs_triangles(options) && counts.non_triangles > 0) {
+    if (!options.triangulate) return not_triangles(options.scheme, counts);
+    Mesh mesh;
+    s = prepare(in, options, mesh, counts);
+    if (!s.ok()) return s;
+    level = refine::level_from_mesh(mesh);
+    all_edges_are_face_edges = false;
+  } else {
+    s = check_two_valent_vertices(level, options);
+    if (!s.ok()) return s;
+  }
+  marks = 0;
+  if (!scheme_keeps_control_edges(options)) return Status::success();
+  if (in.control_edges.empty() && all_edges_are_face_edges) {
+    if (options.start_level == 0) level.edge_marks.assign(level.edge_count, 1);
+    marks = options.start_level == 0 ? level.edge_count : 0;
+    return Status::success();
+  }
+  const refine::Vertex_halfedges around = refine::vertex_halfedges(level);
+  const auto edge_of = [&](std::uint32_t a, std::uint32_t b) {
+    return around.edge(level, a, b);
+  };
+  const Result<Control_edges> control =
+      initial_control_edges(in, level.edge_count, edge_of, options.start_level);
+  if (!control.ok()) return control.status;
+  level.edge_marks.assign(level.edge_count, 0);
+  for (const auto& [a, b] : control.value) level.edge_marks[edge_of(a, b)] = 1;
+  marks = static_cast<double>(control.value.size());
+  return Status::success();
+}
+
+/// Runs the steps of `options` on the fast primal hosts (refine/, `mask`
+/// from refine::primal_mask) from `parent` (level 0 from prepare_level,
+/// with `counts` and `marks` control edges). Each step is checked against
+/// the memory limit first, as the CGAL steps are. `level` follows the step
+/// for messages.
+Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
+                        const refine::Primal_mask& mask,
+                        const Subdivide_options& options,
+                        const Mesh_buffers& in, double input, Mesh_buffers& out,
+                        int& level) {
+  const Caps mesh_caps = Caps::exact(counts);
   refine::Level child;
   refine::Primal_scratch scratch;
   for (int i = 0; i < options.levels; ++i) {
@@ -912,6 +1018,26 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
   Result<Mesh_buffers> result;
   int level = options.start_level;  // for messages
   try {
+    const refine::Primal_mask_lookup fast =
+        refine::primal_mask(options.scheme, options.custom);
+    const double input =
+        buffers_bytes(static_cast<double>(in.vertex_count()),
+                      static_cast<double>(in.face_count()),
+                      static_cast<double>(in.face_indices.size()));
+    if (fast.ok && runs_on_fast_host(options) && options.levels > 0) {
+      refine::Level level0;
+      Counts counts;
+      double marks = 0;
+      Status s = prepare_level(in, options, level0, counts, marks);
+      // Refuse at once a run whose later level would not fit.
+      Run_prediction run;
+      if (s.ok()) s = predict_run(options, counts, input, marks, true, run);
+      if (s.ok())
+        s = run_primal_steps(level0, counts, marks, fast.mask, options, in,
+                             input, result.value, level);
+      if (!s.ok()) result = Result<Mesh_buffers>{s, {}};
+      return result;
+    }
     Mesh mesh;
     Counts counts;
     Status s = prepare(in, options, mesh, counts);
@@ -924,23 +1050,11 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       s = ce.status;
       control = std::move(ce.value);
     }
-    const double input =
-        buffers_bytes(static_cast<double>(in.vertex_count()),
-                      static_cast<double>(in.face_count()),
-                      static_cast<double>(in.face_indices.size()));
     // Refuse at once a run whose later level would not fit.
     Run_prediction run;
     if (s.ok())
       s = predict_run(options, counts, input,
                       static_cast<double>(control.size()), true, run);
-    const refine::Primal_mask_lookup fast =
-        refine::primal_mask(options.scheme, options.custom);
-    if (s.ok() && fast.ok && runs_on_fast_host(options) && options.levels > 0) {
-      s = run_primal_steps(mesh, fast.mask, track ? &control : nullptr, options,
-                           in, counts, input, result.value, level);
-      if (!s.ok()) result = Result<Mesh_buffers>{s, {}};
-      return result;
-    }
     // The model follows the real mesh: its counts are re-read after every
     // step, the array capacities simulated (they are not observable).
     Caps caps = Caps::exact(counts);

@@ -2,6 +2,8 @@
 
 #include <CGAL/boost/graph/iterator.h>
 
+#include <utility>
+
 namespace subdivlab {
 namespace refine {
 
@@ -52,16 +54,81 @@ Level level_from_mesh(const Mesh& mesh) {
   return l;
 }
 
-void mark_edges(
-    const Mesh& mesh,
-    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
-    Level& level) {
-  level.edge_marks.assign(level.edge_count, 0);
-  for (const auto& [a, b] : edges) {
-    const Mesh::Halfedge_index h =
-        mesh.halfedge(Mesh::Vertex_index(a), Mesh::Vertex_index(b));
-    if (h != Mesh::null_halfedge()) level.edge_marks[h.idx() / 2] = 1;
+Level level_from_buffers(const Mesh_buffers& in,
+                         const std::vector<std::uint32_t>& corner_halfedges) {
+  Level l;
+  const std::size_t nv = in.vertex_count();
+  std::vector<std::uint32_t> rank(nv, kNone);
+  for (std::uint32_t v : in.face_indices) rank[v] = 0;
+  std::uint32_t used = 0;
+  for (std::uint32_t& r : rank)
+    if (r == 0) r = used++;
+  l.vertex_count = used;
+  l.positions.resize(3 * std::size_t{used});
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (rank[v] == kNone) continue;
+    for (int i = 0; i < 3; ++i)
+      l.positions[3 * std::size_t{rank[v]} + i] = in.positions[3 * v + i];
   }
+  std::uint32_t edges = 0;
+  for (std::uint32_t h : corner_halfedges) edges += (h & 1) == 0;
+  l.edge_count = edges;
+  l.face_count = static_cast<std::uint32_t>(in.face_count());
+  const std::uint32_t corners =
+      static_cast<std::uint32_t>(corner_halfedges.size());
+  l.border_edge_count = 2 * edges - corners;
+  l.halfedge_target.resize(2 * std::size_t{edges});
+  l.halfedge_corner.assign(2 * std::size_t{edges}, kNone);
+  l.face_halfedges.resize(corners);
+  l.face_offsets.resize(std::size_t{l.face_count} + 1);
+  const std::uint32_t* idx = in.face_indices.data();
+  std::uint32_t o = 0, degree = in.face_sizes[0];
+  bool uniform = true;
+  for (std::uint32_t f = 0; f < l.face_count; ++f) {
+    const std::uint32_t k = in.face_sizes[f];
+    uniform = uniform && k == degree;
+    l.face_offsets[f] = o;
+    // Surface_mesh::add_face starts the face at its last corner's halfedge:
+    // corner j of the level is the input's corner j - 1, which ends at j.
+    for (std::uint32_t j = 0; j < k; ++j) {
+      const std::uint32_t from = o + (j == 0 ? k - 1 : j - 1);
+      const std::uint32_t h = corner_halfedges[from];
+      l.face_halfedges[o + j] = h;
+      l.halfedge_corner[h] = o + j;
+      l.halfedge_target[h] = rank[idx[o + j]];
+      l.halfedge_target[h ^ 1] = rank[idx[from]];
+    }
+    o += k;
+  }
+  l.face_offsets[l.face_count] = o;
+  if (uniform) {
+    l.uniform_degree = degree;
+    l.face_offsets = {};
+  }
+  return l;
+}
+
+Vertex_halfedges vertex_halfedges(const Level& level) {
+  Vertex_halfedges r;
+  r.begin.assign(std::size_t{level.vertex_count} + 1, 0);
+  const std::uint32_t halfedges = 2 * level.edge_count;
+  const std::uint32_t* t = level.halfedge_target.data();
+  for (std::uint32_t h = 0; h < halfedges; ++h) ++r.begin[t[h ^ 1] + 1];
+  for (std::uint32_t v = 0; v < level.vertex_count; ++v)
+    r.begin[v + 1] += r.begin[v];
+  r.halfedges.resize(halfedges);
+  std::vector<std::uint32_t> fill(r.begin.begin(), r.begin.end() - 1);
+  for (std::uint32_t h = 0; h < halfedges; ++h)
+    r.halfedges[fill[t[h ^ 1]]++] = h;
+  return r;
+}
+
+std::uint32_t Vertex_halfedges::edge(const Level& level, std::uint32_t a,
+                                     std::uint32_t b) const {
+  if (a >= level.vertex_count || b >= level.vertex_count) return kNone;
+  for (std::uint32_t i = begin[a]; i < begin[a + 1]; ++i)
+    if (level.halfedge_target[halfedges[i]] == b) return halfedges[i] / 2;
+  return kNone;
 }
 
 Mesh_buffers level_to_buffers(Level&& level) {

@@ -18,12 +18,23 @@ namespace refine {
 /// so that its indices are 0..n-1.
 Level level_from_mesh(const Mesh& mesh);
 
-/// Marks the edges between the vertex pairs of `edges` (pairs of mesh
-/// vertex indices, each an edge of `mesh`, as initial_control_edges gives).
-void mark_edges(
-    const Mesh& mesh,
-    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
-    Level& level);
+/// The tables of the Surface_mesh build_mesh would build from `in`, without
+/// building it: vertices no face uses dropped, the others in their order;
+/// faces in order, each from its first corner; edges numbered as
+/// check_buffers' `corner_halfedges` (which must come from `in`) say.
+/// Precondition: check_buffers(in) succeeded.
+Level level_from_buffers(const Mesh_buffers& in,
+                         const std::vector<std::uint32_t>& corner_halfedges);
+
+/// The halfedges leaving each vertex, for finding the edge between two
+/// vertices: begin[v] .. begin[v + 1] in `halfedges`.
+struct Vertex_halfedges {
+  std::vector<std::uint32_t> begin, halfedges;
+  /// The edge from a to b or b to a, or kNone.
+  std::uint32_t edge(const Level& level, std::uint32_t a,
+                     std::uint32_t b) const;
+};
+Vertex_halfedges vertex_halfedges(const Level& level);
 
 /// The level as buffers, as to_buffers gives the same Surface_mesh: faces
 /// from their first corner, vertices in index order; the marked edges as
