@@ -1,24 +1,27 @@
 #!/usr/bin/env node
-// `npm run bench` (after setup.mjs): one level of each scheme on a real mesh
-// of about 100k faces, natively (build/native/subdiv_bench_native, from
-// wasm/bench/bench_native.cpp) and in Node through the WASM module
-// (build/cli/bench-wasm.mjs), from the same C++ core, and for Loop and
-// Catmull-Clark with OpenSubdiv's Far layer (subdiv_bench_osd, from
-// wasm/bench/bench_osd.cpp and Debian's libosd-dev). Prints the median of
-// RUNS timed runs (after one warm-up), ns per output face, and the WASM time
-// as a ratio to native CGAL and to OpenSubdiv, then parse and write MB/s of
+// `npm run bench` (after setup.mjs). Subdivision: one level of each scheme
+// on bunny00 (75k faces), then Catmull-Clark and Loop to 1-5 M faces (see
+// schemeRows), each natively with CGAL's own hosts
+// (build/native/subdiv_bench_native, from wasm/bench/bench_native.cpp), for
+// Catmull-Clark and Loop with OpenSubdiv's Far layer (subdiv_bench_osd, from
+// wasm/bench/bench_osd.cpp and Debian's libosd-dev), and in Node through the
+// WASM module (build/cli/bench-wasm.mjs: the product's path, the fast hosts
+// where a scheme has one). Prints the median of RUNS timed runs (after one
+// warm-up), ns and predicted peak bytes per output face, and the WASM time
+// as a ratio to native CGAL and to OpenSubdiv. Then parse and write MB/s of
 // OFF and OBJ in Node through the WASM module (bunny00, CGAL's
-// refined_elephant and bunny00 after two Loop steps), and writes
+// refined_elephant and bunny00 after two Loop steps). Writes
 // build/bench.json.
 // Usage: node scripts/bench.mjs [MESH.off] [--runs N] [--io-only]
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { basename, dirname, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const SCHEMES = ['catmull-clark', 'loop', 'doo-sabin', 'sqrt3'];
+const OSD_SCHEMES = ['catmull-clark', 'loop'];
 
 const argv = process.argv.slice(2);
 const ioOnlyAt = argv.indexOf('--io-only');
@@ -26,7 +29,8 @@ const ioOnly = ioOnlyAt >= 0;
 if (ioOnly) argv.splice(ioOnlyAt, 1);
 const runsAt = argv.indexOf('--runs');
 const runs = runsAt >= 0 ? Number(argv.splice(runsAt, 2)[1]) : 5;
-const meshPath = argv[0] ?? join(root, 'public', 'meshes', 'cgal', 'bunny00.off');
+const defaultMesh = join(root, 'public', 'meshes', 'cgal', 'bunny00.off');
+const meshPath = argv[0] ?? defaultMesh;
 if (!existsSync(meshPath)) {
   console.error(`error: ${meshPath} not found; run node scripts/setup.mjs (it extracts CGAL's bunny00.off)`);
   process.exit(1);
@@ -48,7 +52,49 @@ if (!existsSync(wasmBundle)) {
 }
 const { benchWasm, benchIo } = await import(pathToFileURL(wasmBundle).href);
 
-/** One level of each scheme: WASM against native CGAL and OpenSubdiv. */
+/**
+ * The rows: one level of each scheme on the bench mesh, then Catmull-Clark
+ * and Loop to 1-5 M faces (two levels of bunny00 and of CGAL's
+ * refined_elephant, one level of a 1.2 M-face input), where the fast hosts'
+ * targets are set.
+ */
+function schemeRows() {
+  const rows = SCHEMES.map((scheme) => ({ mesh: meshPath, scheme, levels: 1, runs }));
+  if (meshPath !== defaultMesh) return rows;
+  const big = Math.min(runs, 3);
+  const elephant = cgalDataMesh('refined_elephant.off');
+  const million = loopInput(defaultMesh, 2, 'bunny00-loop2.off');
+  for (const [mesh, levels] of [
+    [defaultMesh, 2],
+    [elephant, 2],
+    [million, 1],
+  ]) {
+    if (!mesh) continue;
+    for (const scheme of OSD_SCHEMES) rows.push({ mesh, scheme, levels, runs: big });
+  }
+  return rows;
+}
+
+/** `path` after `levels` Loop steps, written by the CLI into build/meshes/ (a large input). */
+function loopInput(path, levels, name) {
+  const out = join(root, 'build', 'meshes', name);
+  if (!existsSync(out)) {
+    mkdirSync(dirname(out), { recursive: true });
+    run(process.execPath, [
+      join(root, 'bin', 'subdiv.mjs'),
+      path,
+      '--scheme',
+      'loop',
+      '--levels',
+      String(levels),
+      '-o',
+      out,
+    ]);
+  }
+  return out;
+}
+
+/** Each row: WASM against native CGAL (its own hosts) and OpenSubdiv. */
 async function benchSchemes() {
   // The native benchmark, built Release in build/native like the tests.
   const buildDir = join(root, 'build', 'native');
@@ -58,64 +104,61 @@ async function benchSchemes() {
   console.log('[bench] building subdiv_bench_native and subdiv_bench_osd (Release)');
   run('cmake', ['--build', buildDir, '--parallel', '2', '--target', 'subdiv_bench_native']);
   const osdBench = join(buildDir, 'subdiv_bench_osd');
-  const OSD_SCHEMES = ['catmull-clark', 'loop'];
   const hasOsd =
     spawnSync('cmake', ['--build', buildDir, '--parallel', '2', '--target', 'subdiv_bench_osd'], { cwd: root })
       .status === 0 && existsSync(osdBench);
   if (!hasOsd) console.log('[bench] OpenSubdiv (libosd-dev) not found: no OpenSubdiv column');
 
-  const counts = /OFF\s+(\d+)\s+(\d+)/.exec(readFileSync(meshPath, 'utf8').slice(0, 4096));
-  const size = counts ? ` (${counts[1]} vertices, ${counts[2]} faces)` : '';
-  console.log(`[bench] ${basename(meshPath)}${size}, ${runs} timed runs per scheme`);
-
-  // Scheme by scheme, native then WASM, so that a change in the machine's load
+  // Row by row, native then WASM, so that a change in the machine's load
   // during the run affects both sides of a ratio alike.
-  const native = [];
-  const wasm = [];
-  const osd = [];
-  for (const scheme of SCHEMES) {
-    const withOsd = hasOsd && OSD_SCHEMES.includes(scheme);
-    console.log(`[bench] ${scheme}: native, ${withOsd ? 'OpenSubdiv, ' : ''}then WASM in Node`);
-    native.push(JSON.parse(run(join(buildDir, 'subdiv_bench_native'), [meshPath, String(runs), scheme]).trim()));
-    if (withOsd) osd.push(JSON.parse(run(osdBench, [meshPath, String(runs), '1', scheme]).trim()));
-    wasm.push(...(await benchWasm(meshPath, runs, [scheme])));
-  }
-
-  const rows = SCHEMES.map((scheme) => {
-    const n = native.find((r) => r.scheme === scheme);
-    const w = wasm.find((r) => r.scheme === scheme);
-    const o = osd.find((r) => r.scheme === scheme);
+  const rows = [];
+  const raw = [];
+  for (const row of schemeRows()) {
+    const name = `${basename(row.mesh, '.off')} x${row.levels}`;
+    const withOsd = hasOsd && OSD_SCHEMES.includes(row.scheme);
+    console.log(`[bench] ${row.scheme}, ${name}: native CGAL, ${withOsd ? 'OpenSubdiv, ' : ''}then WASM in Node`);
+    const args = [row.mesh, String(row.runs), String(row.levels), row.scheme];
+    const n = JSON.parse(run(join(buildDir, 'subdiv_bench_native'), args).trim());
+    const o = withOsd ? JSON.parse(run(osdBench, args).trim()) : null;
+    const [w] = await benchWasm(row.mesh, row.runs, [row.scheme], row.levels);
     for (const [who, r] of [
       ['WASM', w],
       ['OpenSubdiv', o],
     ]) {
       if (r && r.faces !== n.faces) {
-        console.error(`error: ${scheme}: native gives ${n.faces} faces, ${who} ${r.faces}`);
+        console.error(`error: ${row.scheme} on ${name}: native gives ${n.faces} faces, ${who} ${r.faces}`);
         process.exit(1);
       }
     }
-    return {
-      scheme,
+    raw.push({ ...row, native: n, osd: o, wasm: w });
+    rows.push({
+      mesh: name,
+      scheme: row.scheme,
       faces: n.faces,
       wasm_ms: w.median_ms,
       wasm_ns_per_face: (w.median_ms * 1e6) / n.faces,
+      peak_bytes_per_face: w.peak_bytes / n.faces,
       native_ms: n.median_ms,
       osd_ms: o?.median_ms ?? null,
       ratio: w.median_ms / n.median_ms,
       ratio_osd: o ? w.median_ms / o.median_ms : null,
-    };
-  });
+    });
+  }
 
-  const num = (x, n) => (x === null ? '–' : x.toFixed(n)).padStart(11);
-  const head = ['faces out', 'WASM ms', 'ns/face', 'CGAL ms', 'OSD ms', 'WASM/CGAL', 'WASM/OSD'];
-  console.log(`\n${pad('scheme', 15)}${head.map((h) => h.padStart(11)).join('')}`);
+  const num = (x, n) => (x === null ? '–' : x.toFixed(n)).padStart(10);
+  const head = ['faces out', 'WASM ms', 'ns/face', 'B/face', 'CGAL ms', 'OSD ms', '/CGAL', '/OSD'];
+  console.log(`\n${pad('scheme', 15)}${pad('mesh', 22)}${head.map((h) => h.padStart(10)).join('')}`);
   for (const r of rows) {
     console.log(
-      `${pad(r.scheme, 15)}${String(r.faces).padStart(11)}${num(r.wasm_ms, 1)}${num(r.wasm_ns_per_face, 0)}` +
-        `${num(r.native_ms, 1)}${num(r.osd_ms, 1)}${num(r.ratio, 2)}${num(r.ratio_osd, 2)}`,
+      `${pad(r.scheme, 15)}${pad(r.mesh, 22)}${String(r.faces).padStart(10)}${num(r.wasm_ms, 1)}` +
+        `${num(r.wasm_ns_per_face, 0)}${num(r.peak_bytes_per_face, 0)}${num(r.native_ms, 1)}${num(r.osd_ms, 1)}` +
+        `${num(r.ratio, 2)}${num(r.ratio_osd, 2)}`,
     );
   }
-  return { rows, native, wasm, osd };
+  console.log(
+    '(WASM: subdivide() in Node, copies in and out included; B/face: the peak the memory model predicts, which bounds the measured one; CGAL: native, its own hosts; /CGAL, /OSD: WASM time over theirs)',
+  );
+  return { rows, raw };
 }
 
 /** A mesh of CGAL's data set (libcgal-demo) not kept in public/: extracted into build/meshes/. */
@@ -158,7 +201,7 @@ async function benchInputOutput() {
 }
 
 const pad = (s, n) => String(s).padEnd(n);
-const schemes = ioOnly ? { rows: [], native: [], wasm: [], osd: [] } : await benchSchemes();
+const schemes = ioOnly ? { rows: [], raw: [] } : await benchSchemes();
 const io = await benchInputOutput();
 const machine = `${cpus()[0]?.model ?? 'unknown CPU'}, ${cpus().length} cores, Node ${process.version}`;
 console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);

@@ -2,7 +2,7 @@
 // a mesh with CGAL's own hosts (Subdivide_options::cgal_hosts; the fast hosts
 // are the WASM side's), natively, and prints one
 // JSON object per scheme (scheme, faces, median_ms, runs_ms) on stdout.
-// Usage: subdiv_bench_native MESH.off [RUNS] [SCHEME...]
+// Usage: subdiv_bench_native MESH.off RUNS LEVELS [SCHEME...]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -19,14 +19,16 @@
 
 int main(int argc, char** argv) {
   using namespace subdivlab;
-  if (argc < 2) {
-    std::cerr << "usage: subdiv_bench_native MESH.off [RUNS] [SCHEME...]\n";
+  if (argc < 4) {
+    std::cerr
+        << "usage: subdiv_bench_native MESH.off RUNS LEVELS [SCHEME...]\n";
     return 2;
   }
   const std::string path = argv[1];
-  const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
+  const int runs = std::max(1, std::atoi(argv[2]));
+  const int levels = std::max(1, std::atoi(argv[3]));
   std::vector<std::string> schemes;
-  for (int i = 3; i < argc; ++i) schemes.push_back(argv[i]);
+  for (int i = 4; i < argc; ++i) schemes.push_back(argv[i]);
   if (schemes.empty())
     schemes = {"catmull-clark", "loop", "doo-sabin", "sqrt3"};
 
@@ -51,7 +53,7 @@ int main(int argc, char** argv) {
   for (const std::string& scheme : schemes) {
     Subdivide_options options;
     options.scheme = scheme;
-    options.levels = 1;
+    options.levels = levels;
     options.cgal_hosts = true;  // the reference: CGAL's own hosts
     std::vector<double> times;
     std::size_t faces = 0;

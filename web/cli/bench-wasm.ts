@@ -8,14 +8,23 @@ import { readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
 import type { MeshFormat, SchemeName } from '../core/mesh';
-import { exportMesh, exportMeshChunks, formatFromFileName, parseMesh, subdivide } from '../core/subdiv-core';
+import {
+  exportMesh,
+  exportMeshChunks,
+  formatFromFileName,
+  parseMesh,
+  predictSize,
+  subdivide,
+} from '../core/subdiv-core';
 
-/** Timings of one scheme, as the native bench prints them. */
+/** Timings of one scheme, as the native bench prints them, with the core's predicted peak. */
 export interface SchemeTiming {
   scheme: string;
   faces: number;
   median_ms: number;
   runs_ms: number[];
+  /** predictSize's peak bytes for the run: the memory model, which bounds the measured peak (core tests). */
+  peak_bytes: number;
 }
 
 function median(values: number[]): number {
@@ -24,8 +33,13 @@ function median(values: number[]): number {
   return n % 2 ? v[(n - 1) / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
-/** One untimed warm-up run and `runs` timed runs of one level of each scheme on the mesh at `path`. */
-export async function benchWasm(path: string, runs: number, schemes: SchemeName[]): Promise<SchemeTiming[]> {
+/** One untimed warm-up run and `runs` timed runs of `levels` levels of each scheme on the mesh at `path`. */
+export async function benchWasm(
+  path: string,
+  runs: number,
+  schemes: SchemeName[],
+  levels = 1,
+): Promise<SchemeTiming[]> {
   await initNode();
   const mesh = parseMesh(readFileSync(path, 'utf8'), formatFromFileName(path) ?? 'off');
   return schemes.map((scheme) => {
@@ -33,12 +47,13 @@ export async function benchWasm(path: string, runs: number, schemes: SchemeName[
     let faces = 0;
     for (let r = 0; r <= runs; r++) {
       const start = performance.now();
-      const out = subdivide(mesh, { scheme, levels: 1 });
+      const out = subdivide(mesh, { scheme, levels });
       const ms = performance.now() - start;
       faces = out.faceSizes.length;
       if (r > 0) times.push(ms);
     }
-    return { scheme, faces, median_ms: median(times), runs_ms: times };
+    const peak_bytes = predictSize(mesh, { scheme, levels }).peakBytes;
+    return { scheme, faces, median_ms: median(times), runs_ms: times, peak_bytes };
   });
 }
 
