@@ -428,8 +428,9 @@ double to_buffers_peak(const Counts& n, const Caps& caps, double base) {
 /// catmull-clark (PQQ) or loop (PTQ) run there. Their peak: the parent and
 /// child levels' tables and the step's per-vertex sums; on the first step
 /// the Surface_mesh the level came from (freed before the step); after the
-/// last, the child level with the output's face arrays (the positions move
-/// out). The child of the last step has no halfedge corners.
+/// last, the child level with the output's face sizes and control edges
+/// (positions and face vertices move out). The child of the last step has
+/// only its face vertices, and its halfedge targets when edges are marked.
 bool runs_on_fast_host(const Subdivide_options& o) {
   const std::string model = size_model(o);
   return !o.cgal_hosts && (model == "catmull-clark" || model == "loop");
@@ -440,11 +441,10 @@ double fast_step_peak(const std::string& scheme, const Counts& c,
                       double marks, double base) {
   const bool marked = marks > 0;
   const double parent =
-      refine::level_bytes(c.vertices, c.edges, c.degree_sum(), marked) +
+      refine::level_bytes(c.vertices, c.edges, c.degree_sum(), marked, false) +
       (first ? 4 * (c.faces + 1) : 0);
   const double child =
-      refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked) -
-      (last ? 8 * n.edges : 0);
+      refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked, last);
   double peak = base + parent + child +
                 refine::primal_scratch_bytes(
                     c.vertices, scheme == "catmull-clark", c.border_edges > 0);
@@ -464,9 +464,7 @@ double fast_step_peak(const std::string& scheme, const Counts& c,
     peak = std::max(peak, base + std::max(from_buffers, from_mesh) + finding +
                               control_edge_bytes(marks));
   }
-  if (last)
-    peak = std::max(
-        peak, base + child + 4 * n.degree_sum() + 4 * n.faces + 8 * 2 * marks);
+  if (last) peak = std::max(peak, base + child + 4 * n.faces + 8 * 2 * marks);
   return peak;
 }
 

@@ -7,8 +7,12 @@
 namespace subdivlab {
 namespace refine {
 
-double level_bytes(double vertices, double edges, double corners, bool marks) {
-  return 24 * vertices + 2 * 2 * 4 * edges + 4 * corners + (marks ? edges : 0);
+double level_bytes(double vertices, double edges, double corners, bool marks,
+                   bool last) {
+  const double halfedge_tables = 4 * corners + 2 * 4 * edges;  // and corners
+  const double targets = 2 * 4 * edges;
+  return 24 * vertices + 4 * corners + (last ? 0 : halfedge_tables) +
+         (!last || marks ? targets : 0) + (marks ? edges : 0);
 }
 
 Level level_from_mesh(const Mesh& mesh) {
@@ -33,6 +37,7 @@ Level level_from_mesh(const Mesh& mesh) {
   }
   l.face_offsets.reserve(std::size_t{l.face_count} + 1);
   l.face_halfedges.reserve(halfedges - l.border_edge_count);
+  l.face_vertices.reserve(halfedges - l.border_edge_count);
   std::uint32_t degree = 0;
   bool uniform = true;
   for (Mesh::Face_index f : mesh.faces()) {
@@ -41,6 +46,7 @@ Level level_from_mesh(const Mesh& mesh) {
          CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
       l.halfedge_corner[h.idx()] = l.corner_count();
       l.face_halfedges.push_back(h.idx());
+      l.face_vertices.push_back(mesh.target(h).idx());
     }
     const std::uint32_t k = l.corner_count() - l.face_offsets.back();
     if (degree == 0) degree = k;
@@ -80,6 +86,7 @@ Level level_from_buffers(const Mesh_buffers& in,
   l.halfedge_target.resize(2 * std::size_t{edges});
   l.halfedge_corner.assign(2 * std::size_t{edges}, kNone);
   l.face_halfedges.resize(corners);
+  l.face_vertices.resize(corners);
   l.face_offsets.resize(std::size_t{l.face_count} + 1);
   const std::uint32_t* idx = in.face_indices.data();
   std::uint32_t o = 0, degree = in.face_sizes[0];
@@ -95,6 +102,7 @@ Level level_from_buffers(const Mesh_buffers& in,
       const std::uint32_t h = corner_halfedges[from];
       l.face_halfedges[o + j] = h;
       l.halfedge_corner[h] = o + j;
+      l.face_vertices[o + j] = rank[idx[o + j]];
       l.halfedge_target[h] = rank[idx[o + j]];
       l.halfedge_target[h ^ 1] = rank[idx[from]];
     }
@@ -134,12 +142,8 @@ std::uint32_t Vertex_halfedges::edge(const Level& level, std::uint32_t a,
 Mesh_buffers level_to_buffers(Level&& level) {
   Mesh_buffers out;
   out.positions = std::move(level.positions);
-  const std::uint32_t corners = level.corner_count();
-  out.face_indices.resize(corners);
-  const std::uint32_t* fh = level.face_halfedges.data();
+  out.face_indices = std::move(level.face_vertices);
   const std::uint32_t* target = level.halfedge_target.data();
-  std::uint32_t* fi = out.face_indices.data();
-  for (std::uint32_t c = 0; c < corners; ++c) fi[c] = target[fh[c]];
   if (level.uniform_degree != 0) {
     out.face_sizes.assign(level.face_count, level.uniform_degree);
   } else {

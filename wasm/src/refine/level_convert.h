@@ -39,7 +39,7 @@ Vertex_halfedges vertex_halfedges(const Level& level);
 /// The level as buffers, as to_buffers gives the same Surface_mesh: faces
 /// from their first corner, vertices in index order; the marked edges as
 /// control edges (a pair per marked edge, in edge order, source first).
-/// The positions move out of `level`.
+/// The positions and face vertices move out of `level`.
 Mesh_buffers level_to_buffers(Level&& level);
 
 }  // namespace refine

@@ -56,29 +56,46 @@ inline std::uint32_t second_half(std::uint32_t x, std::uint32_t E) {
   return (x & 1) != 0 ? x : x + 2 * E;
 }
 
+/// What a host builds for a child: every table when it will be refined
+/// again; for the last level only what its buffers need, the face vertices
+/// and, when edges are marked, the halfedge targets (the marks' ends).
+struct Parts {
+  bool halfedges, targets;
+  Parts(const Level& parent, bool last)
+      : halfedges(!last), targets(!last || !parent.edge_marks.empty()) {}
+};
+
 /// Counts, halfedge targets of the split edges, border halves, marks:
 /// everything both hosts do alike.
 void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
-                 bool last) {
+                 std::size_t child_corners, const Parts& parts) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count;
   c.edge_count = child_edges;
   c.border_edge_count = 2 * p.border_edge_count;
   c.face_offsets = {};
-  size_to(c.halfedge_target, 2 * std::size_t{child_edges});
-  if (last)
-    c.halfedge_corner = {};
-  else
+  size_to(c.face_vertices, child_corners);
+  if (parts.halfedges) {
+    size_to(c.face_halfedges, child_corners);
     size_to(c.halfedge_corner, 2 * std::size_t{child_edges});
-  std::uint32_t* t = c.halfedge_target.data();
-  const std::uint32_t* pt = p.halfedge_target.data();
-  for (std::uint32_t e = 0; e < E; ++e) {
-    const std::uint32_t a = pt[2 * e + 1], b = pt[2 * e], m = V + e;
-    t[2 * e] = m;
-    t[2 * e + 1] = a;
-    t[2 * (E + e)] = b;
-    t[2 * (E + e) + 1] = m;
+  } else {
+    c.face_halfedges = {};
+    c.halfedge_corner = {};
   }
-  if (!last && p.border_edge_count > 0) {
+  if (parts.targets) {
+    size_to(c.halfedge_target, 2 * std::size_t{child_edges});
+    std::uint32_t* t = c.halfedge_target.data();
+    const std::uint32_t* pt = p.halfedge_target.data();
+    for (std::uint32_t e = 0; e < E; ++e) {
+      const std::uint32_t a = pt[2 * e + 1], b = pt[2 * e], m = V + e;
+      t[2 * e] = m;
+      t[2 * e + 1] = a;
+      t[2 * (E + e)] = b;
+      t[2 * (E + e) + 1] = m;
+    }
+  } else {
+    c.halfedge_target = {};
+  }
+  if (parts.halfedges && p.border_edge_count > 0) {
     // Border halves: the faces below never write them.
     const std::uint32_t* pc = p.halfedge_corner.data();
     std::uint32_t* cc = c.halfedge_corner.data();
@@ -98,15 +115,20 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
   }
 }
 
-/// Writes child face `face`'s four or three halfedges, and their corners.
+/// Writes child face `face`: its vertices, and (unless it is the last
+/// level) its halfedges and their corners.
 template <std::uint32_t K>
-inline void put_face(Level& c, std::uint32_t face, const std::uint32_t (&h)[K],
-                     bool last) {
+inline void put_face(Level& c, std::uint32_t face, const std::uint32_t (&v)[K],
+                     const std::uint32_t (&h)[K], const Parts& parts) {
+  std::uint32_t* vertices = c.face_vertices.data() + std::size_t{K} * face;
+  for (std::uint32_t r = 0; r < K; ++r) vertices[r] = v[r];
+  if (!parts.halfedges) return;
   std::uint32_t* out = c.face_halfedges.data() + std::size_t{K} * face;
-  for (std::uint32_t r = 0; r < K; ++r) out[r] = h[r];
-  if (last) return;
   std::uint32_t* corner = c.halfedge_corner.data();
-  for (std::uint32_t r = 0; r < K; ++r) corner[h[r]] = K * face + r;
+  for (std::uint32_t r = 0; r < K; ++r) {
+    out[r] = h[r];
+    corner[h[r]] = K * face + r;
+  }
 }
 
 }  // namespace
@@ -124,21 +146,24 @@ Child_counts ptq_counts(const Level& p) {
 void refine_pqq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
                       S = p.corner_count();
-  split_edges(p, c, 2 * E + S, last);
+  const Parts parts(p, last);
+  split_edges(p, c, 2 * E + S, 4 * std::size_t{S}, parts);
   c.vertex_count = V + E + F;
   c.face_count = S;
   c.uniform_degree = 4;
-  size_to(c.face_halfedges, 4 * std::size_t{S});
   std::uint32_t* t = c.halfedge_target.data();
   for (std::uint32_t f = 0; f < F; ++f) {
     const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
     const std::uint32_t* fh = p.face_halfedges.data() + begin;
+    const std::uint32_t* fv = p.face_vertices.data() + begin;
     const std::uint32_t start = first_corner_offset(fh, k);
-    // g(j) for j = 1..k.
-    auto g = [&](std::uint32_t j) {
+    // g(j) for j = 1..k runs v_j -> v_j+1, which ends at corner start + j.
+    auto at = [&](std::uint32_t j) {
       const std::uint32_t i = start + j;
-      return fh[i < k ? i : i - k];
+      return i < k ? i : i - k;
     };
+    auto g = [&](std::uint32_t j) { return fh[at(j)]; };
+    auto m = [&](std::uint32_t j) { return V + (g(j) >> 1); };
     const std::uint32_t centre = V + E + f, first_edge = 2 * E + begin,
                         first_face = F + begin - f;
     // Spoke j joins m_j and c: its halfedge m_j -> c (even, but odd for j=2).
@@ -146,23 +171,25 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
       const std::uint32_t e = first_edge + j - 1;
       return j == 2 ? 2 * e + 1 : 2 * e;
     };
-    for (std::uint32_t j = 1; j <= k; ++j) {
-      const std::uint32_t m = V + (g(j) >> 1), h = into_centre(j);
-      t[h] = centre;
-      t[h ^ 1] = m;
+    if (parts.targets) {
+      for (std::uint32_t j = 1; j <= k; ++j) {
+        const std::uint32_t h = into_centre(j);
+        t[h] = centre;
+        t[h ^ 1] = m(j);
+      }
     }
     for (std::uint32_t j = 1; j <= k; ++j) {
       const std::uint32_t before = j == 1 ? k : j - 1;
+      const std::uint32_t vj = fv[at(before)], mb = m(before), mj = m(j);
       const std::uint32_t from_centre = into_centre(before) ^ 1,
                           in = second_half(g(before), E),
                           out = first_half(g(j), E), back = into_centre(j);
-      if (j == 1) {
-        put_face<4>(c, first_face + k - 2, {from_centre, in, out, back}, last);
-      } else if (j == 2) {
-        put_face<4>(c, first_face, {from_centre, in, out, back}, last);
+      if (j <= 2) {
+        put_face<4>(c, j == 1 ? first_face + k - 2 : first_face,
+                    {mb, vj, mj, centre}, {from_centre, in, out, back}, parts);
       } else {
-        put_face<4>(c, j == 3 ? f : first_face + j - 3,
-                    {back, from_centre, in, out}, last);
+        put_face<4>(c, j == 3 ? f : first_face + j - 3, {centre, mb, vj, mj},
+                    {back, from_centre, in, out}, parts);
       }
     }
   }
@@ -170,35 +197,39 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
 
 void refine_ptq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
-  split_edges(p, c, 2 * E + 3 * F, last);
+  const Parts parts(p, last);
+  split_edges(p, c, 2 * E + 3 * F, 12 * std::size_t{F}, parts);
   c.vertex_count = V + E;
   c.face_count = 4 * F;
   c.uniform_degree = 3;
-  size_to(c.face_halfedges, 12 * std::size_t{F});
   std::uint32_t* t = c.halfedge_target.data();
-  const std::uint32_t* all = p.face_halfedges.data();
   for (std::uint32_t f = 0; f < F; ++f) {
-    const std::uint32_t* fh = all + 3 * std::size_t{f};
+    const std::uint32_t* fh = p.face_halfedges.data() + 3 * std::size_t{f};
+    const std::uint32_t* fv = p.face_vertices.data() + 3 * std::size_t{f};
     const std::uint32_t start = first_corner_offset(fh, 3);
-    const std::uint32_t g1 = fh[(start + 1) % 3], g2 = fh[(start + 2) % 3],
-                        g3 = fh[start];
+    const std::uint32_t i1 = start == 2 ? 0 : start + 1,
+                        i2 = start == 0 ? 2 : start - 1;
+    const std::uint32_t g1 = fh[i1], g2 = fh[i2], g3 = fh[start];
+    const std::uint32_t v1 = fv[start], v2 = fv[i1], v3 = fv[i2];
     const std::uint32_t m1 = V + (g1 >> 1), m2 = V + (g2 >> 1),
                         m3 = V + (g3 >> 1);
     const std::uint32_t e = 2 * E + 3 * f;
     const std::uint32_t h12 = 2 * e, h23 = 2 * (e + 1), h31 = 2 * (e + 2);
-    t[h12] = m2;
-    t[h12 + 1] = m1;
-    t[h23] = m3;
-    t[h23 + 1] = m2;
-    t[h31] = m1;
-    t[h31 + 1] = m3;
-    put_face<3>(c, f, {h31, h12, h23}, last);
-    put_face<3>(c, F + 3 * f, {h12 + 1, second_half(g1, E), first_half(g2, E)},
-                last);
-    put_face<3>(c, F + 3 * f + 1,
-                {h23 + 1, second_half(g2, E), first_half(g3, E)}, last);
-    put_face<3>(c, F + 3 * f + 2,
-                {h31 + 1, second_half(g3, E), first_half(g1, E)}, last);
+    if (parts.targets) {
+      t[h12] = m2;
+      t[h12 + 1] = m1;
+      t[h23] = m3;
+      t[h23 + 1] = m2;
+      t[h31] = m1;
+      t[h31 + 1] = m3;
+    }
+    put_face<3>(c, f, {m1, m2, m3}, {h31, h12, h23}, parts);
+    put_face<3>(c, F + 3 * f, {m1, v2, m2},
+                {h12 + 1, second_half(g1, E), first_half(g2, E)}, parts);
+    put_face<3>(c, F + 3 * f + 1, {m2, v3, m3},
+                {h23 + 1, second_half(g2, E), first_half(g3, E)}, parts);
+    put_face<3>(c, F + 3 * f + 2, {m3, v1, m1},
+                {h31 + 1, second_half(g3, E), first_half(g1, E)}, parts);
   }
 }
 

@@ -84,7 +84,7 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
   double* out = c.positions.data();
   double* ring = s.ring.data();
   const std::uint32_t* t = p.halfedge_target.data();
-  const std::uint32_t* fh = p.face_halfedges.data();
+  const std::uint32_t* fv = p.face_vertices.data();
   const std::uint32_t* corner = p.halfedge_corner.data();
   const std::uint32_t* next = s.border_next.data();
   const std::uint32_t* prev = s.border_prev.data();
@@ -100,11 +100,11 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
       const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
       double q[3] = {0, 0, 0};
       for (std::uint32_t i = begin; i < end; ++i)
-        add(q, in + 3 * std::size_t{t[fh[i]]});
+        add(q, in + 3 * std::size_t{fv[i]});
       const double k = end - begin;
       for (int a = 0; a < 3; ++a) face_point[a] = q[a] / k;
       for (std::uint32_t i = begin; i < end; ++i)
-        add(face_sum + 3 * std::size_t{t[fh[i]]}, face_point);
+        add(face_sum + 3 * std::size_t{fv[i]}, face_point);
     }
   }
 
@@ -127,11 +127,11 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
         w0 = face_points + 3 * std::size_t{p.corner_face(c0)};
         w1 = face_points + 3 * std::size_t{p.corner_face(c1)};
       } else {
-        // Triangles: the vertex opposite is the target of the next corner.
+        // Triangles: the vertex opposite is the next corner's.
         const std::uint32_t n0 = c0 % 3 == 2 ? c0 - 2 : c0 + 1,
                             n1 = c1 % 3 == 2 ? c1 - 2 : c1 + 1;
-        w0 = in + 3 * std::size_t{t[fh[n0]]};
-        w1 = in + 3 * std::size_t{t[fh[n1]]};
+        w0 = in + 3 * std::size_t{fv[n0]};
+        w1 = in + 3 * std::size_t{fv[n1]};
       }
       for (int i = 0; i < 3; ++i)
         edge_point[i] = end_w * (pa[i] + pb[i]) + wing_w * (w0[i] + w1[i]);

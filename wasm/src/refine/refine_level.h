@@ -10,9 +10,11 @@
 // index: CGAL stays the reference, compared element by element.
 //
 // Tables, and what the next wave adds to them without a rewrite:
-//   face_halfedges   a face's halfedges in cycle order ("corners"); a
-//                    per-corner value (face-varying UVs) is an array beside
-//                    it, refined corner by corner as the faces are
+//   face_vertices    a face's vertices in cycle order ("corners"), the
+//                    target of each of its halfedges; a per-corner value
+//                    (face-varying UVs) is an array beside it, refined
+//                    corner by corner as the faces are
+//   face_halfedges   a face's halfedges, corner by corner
 //   halfedge_target  the vertex a halfedge points to; its source is the
 //                    target of h ^ 1
 //   halfedge_corner  where a halfedge sits in face_halfedges (kNone on the
@@ -40,7 +42,11 @@ struct Level {
   /// face f's corners are [face_offsets[f], face_offsets[f + 1]); empty
   /// when uniform_degree != 0.
   std::vector<std::uint32_t> face_offsets;
-  std::vector<std::uint32_t> face_halfedges;   ///< one per corner
+  std::vector<std::uint32_t> face_vertices;  ///< one per corner
+  /// One per corner. The last level of a run has no halfedge tables
+  /// (face_halfedges, halfedge_corner; halfedge_target only when edges are
+  /// marked): its buffers need none.
+  std::vector<std::uint32_t> face_halfedges;
   std::vector<std::uint32_t> halfedge_target;  ///< 2 * edge_count
   std::vector<std::uint32_t> halfedge_corner;  ///< 2 * edge_count, or kNone
   /// Edges with a border halfedge; 0 on a closed mesh.
@@ -50,7 +56,7 @@ struct Level {
   std::vector<double> positions;  ///< x y z per vertex
 
   std::uint32_t corner_count() const {
-    return static_cast<std::uint32_t>(face_halfedges.size());
+    return static_cast<std::uint32_t>(face_vertices.size());
   }
   std::uint32_t face_begin(std::uint32_t f) const {
     return uniform_degree != 0 ? f * uniform_degree : face_offsets[f];
@@ -68,8 +74,9 @@ struct Level {
 };
 
 /// Bytes the tables of a level with these counts hold (marks included when
-/// `marks`), for the memory model.
-double level_bytes(double vertices, double edges, double corners, bool marks);
+/// `marks`; only the last level's tables when `last`), for the memory model.
+double level_bytes(double vertices, double edges, double corners, bool marks,
+                   bool last);
 
 }  // namespace refine
 }  // namespace subdivlab
