@@ -894,7 +894,11 @@ TEST(ExtraSubdivide, QuadTriangleRefusesOnlyTwoValentVerticesBetweenTriangles) {
     Mesh m;
     const Status s = build_mesh(out, m);
     EXPECT_TRUE(s.ok()) << s.message;
+    EXPECT_TRUE(predict_size(*in, options("quad-triangle", 3)).ok());
   }
+  // The prediction refuses what the step refuses, in the same words.
+  EXPECT_EQ(predict_size(pillow, options("quad-triangle", 1)).status.message,
+            r.status.message);
 }
 
 }  // namespace

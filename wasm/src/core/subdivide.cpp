@@ -217,20 +217,31 @@ Status check_finite_points(const Mesh& mesh, const Mesh_buffers& in,
   return Status::success();
 }
 
-/// check_two_valent_vertices on a level (the PTQ schemes refuse an interior
-/// vertex of valence 2).
+/// check_two_valent_vertices on a level: the same refusals, the same words.
 Status check_two_valent_vertices(const refine::Level& l,
                                  const Subdivide_options& options) {
-  if (size_model(options) != "loop") return Status::success();
+  const std::string model = size_model(options);
+  const bool two_triangles_only = options.scheme == "quad-triangle";
+  if (model != "loop" && model != "sqrt3" && model != "doo-sabin" &&
+      !two_triangles_only)
+    return Status::success();
+  // Per vertex: valence, on the border, and (quad-triangle) whether a face
+  // into it is not a triangle.
   std::vector<std::uint32_t> valence(l.vertex_count, 0);
-  std::vector<bool> border(l.vertex_count, false);
+  std::vector<bool> border(l.vertex_count, false), polygon(l.vertex_count);
   const std::uint32_t* t = l.halfedge_target.data();
   for (std::uint32_t h = 0; h < 2 * l.edge_count; ++h) {
-    ++valence[t[h]];
-    if (l.halfedge_corner[h] == refine::kNone) border[t[h]] = true;
+    const std::uint32_t v = t[h], c = l.halfedge_corner[h];
+    ++valence[v];
+    if (c == refine::kNone) {
+      border[v] = true;
+    } else if (two_triangles_only) {
+      const std::uint32_t f = l.corner_face(c);
+      if (l.face_end(f) - l.face_begin(f) != 3) polygon[v] = true;
+    }
   }
   for (std::uint32_t v = 0; v < l.vertex_count; ++v) {
-    if (valence[v] != 2 || border[v]) continue;
+    if (valence[v] != 2 || border[v] || polygon[v]) continue;
     return Status::error(
         Status_code::invalid_mesh,
         options.scheme + " cannot refine vertex " + std::to_string(v) +
@@ -387,15 +398,20 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
   try {
     Counts c;
     {
-      Mesh mesh;
+      // The counts of the mesh build_mesh would build, from its tables.
       Status s = check_options(options);
-      if (s.ok()) s = build_mesh(in, mesh);
-      if (s.ok()) s = check_two_valent_vertices(mesh, options);
+      std::vector<std::uint32_t> corner_halfedges;
+      if (s.ok()) s = detail::check_buffers(in, {}, &corner_halfedges).status;
+      refine::Level level;
+      if (s.ok()) {
+        level = refine::level_from_buffers(in, corner_halfedges);
+        s = check_two_valent_vertices(level, options);
+      }
       if (!s.ok()) {
         result.status = s;
         return result;
       }
-      c = counts_of(mesh);
+      c = counts_of(level);
     }
     // Marks the primal schemes carry (before any triangulation).
     double marks = 0;
