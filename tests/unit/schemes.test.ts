@@ -2,8 +2,10 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import type { CgalSchemeName, Mesh, MeshFacts, SchemeName } from '../../web/core/mesh';
-import { meshFacts, subdivide } from '../../web/core/subdiv-core';
+import type { RuleHost } from '../../web/core/rule-set';
+import { coreSchemeInfo, hostOf, meshFacts, schemeNames, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
+import { hostLabel, hostNeedsTriangles, schemeInfo } from '../../web/viewer/scheme-info';
 import { catmullClarkStep, loopStep, repeat } from './reference-subdivision';
 import { expectCounts, expectSameMesh, expectSamePoints, loadFixture, toPlain } from './test-helpers';
 
@@ -262,5 +264,58 @@ describe('levels and options', () => {
     expect(() => subdivide(cube, { scheme: 'loop', levels: 1.5 })).toThrowError(
       expect.objectContaining({ code: 'invalid_argument' }),
     );
+  });
+});
+
+describe("the core's scheme table", () => {
+  it('names every scheme in order, with its host, and each host what it needs', () => {
+    const { hosts, schemes } = coreSchemeInfo();
+    expect(schemes.map((s) => s.name)).toEqual(schemeNames());
+    expect(schemes.map((s) => [s.name, s.host])).toEqual([
+      ['catmull-clark', 'pqq'],
+      ['loop', 'ptq'],
+      ['doo-sabin', 'dqq'],
+      ['sqrt3', 'sqrt3'],
+      ['quad-triangle', 'pqt'],
+      ['linear', 'pqq'],
+      ['linear-tri', 'ptq'],
+      ['custom', null],
+    ]);
+    expect(hosts.map((h) => [h.name, h.needsTriangles, h.keepsControlEdges, h.fast, h.sizeModel])).toEqual([
+      ['pqq', false, true, true, 'catmull-clark'],
+      ['ptq', true, true, true, 'loop'],
+      ['dqq', false, false, false, 'doo-sabin'],
+      ['sqrt3', true, false, false, 'sqrt3'],
+      ['pqt', false, true, false, 'quad-triangle'],
+    ]);
+  });
+
+  it('is what the core does: triangles refused where the host needs them, control edges kept where it keeps them', () => {
+    const cube = loadFixture('cube.off');
+    for (const { name } of coreSchemeInfo().schemes) {
+      if (name === 'custom') continue;
+      const host = hostOf(name);
+      let refused = false;
+      try {
+        const out = subdivide(cube, { scheme: name as SchemeName, levels: 1 });
+        expect(out.controlEdges.length > 0, name).toBe(host?.keepsControlEdges);
+      } catch (error) {
+        refused = error instanceof SubdivError && error.code === 'not_triangles';
+      }
+      expect(refused, name).toBe(host?.needsTriangles);
+    }
+  });
+
+  it("agrees with the app's picker (web/viewer/scheme-info.ts) until the app reads it", () => {
+    const { hosts, schemes } = coreSchemeInfo();
+    for (const s of schemes) {
+      const app = schemeInfo(s.name);
+      expect(app.description, s.name).toBe(s.description);
+      if (s.host) expect(app.needsTriangles, s.name).toBe(hosts.find((h) => h.name === s.host)?.needsTriangles);
+    }
+    for (const h of hosts.filter((x) => x.name !== 'pqt')) {
+      expect(hostLabel(h.name as RuleHost)).toBe(h.label);
+      expect(hostNeedsTriangles(h.name as RuleHost)).toBe(h.needsTriangles);
+    }
   });
 });

@@ -385,6 +385,34 @@ val js_scheme_names() {
   });
 }
 
+val js_scheme_info() {
+  return guarded([] {
+    val hosts = val::array();
+    for (const Host_info& h : host_table()) {
+      val o = val::object();
+      o.set("name", h.name);
+      o.set("label", h.label);
+      o.set("needsTriangles", h.needs_triangles);
+      o.set("keepsControlEdges", h.keeps_control_edges);
+      o.set("fast", h.fast);
+      o.set("sizeModel", h.size_model);
+      hosts.call<void>("push", o);
+    }
+    val schemes = val::array();
+    for (const Scheme_info& s : scheme_table()) {
+      val o = val::object();
+      o.set("name", s.name);
+      o.set("host", s.host.empty() ? val::null() : val(s.host));
+      o.set("description", s.description);
+      schemes.call<void>("push", o);
+    }
+    val out = ok_object();
+    out.set("hosts", hosts);
+    out.set("schemes", schemes);
+    return out;
+  });
+}
+
 /// Throws what `kind` names ("cgal", "std", "alloc", anything else: an int)
 /// inside the same guard as every export: lets the tests prove that such a
 /// failure comes back as an error object and that the instance lives on.
@@ -423,6 +451,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("predict_size", &subdivlab::js_predict_size);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("scheme_names", &subdivlab::js_scheme_names);
+  emscripten::function("scheme_info", &subdivlab::js_scheme_info);
   emscripten::function("check_rules", &subdivlab::js_check_rules);
   emscripten::function("heap_in_use", &subdivlab::js_heap_in_use);
   emscripten::function("throw_for_test", &subdivlab::js_throw_for_test);

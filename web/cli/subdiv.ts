@@ -8,7 +8,15 @@ import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
 import type { Mesh, MeshFormat, SchemeName } from '../core/mesh';
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
-import { formatFromFileName, meshFacts, parseMesh, schemeNames, subdivide, writeMesh } from '../core/subdiv-core';
+import {
+  formatFromFileName,
+  hostOf,
+  meshFacts,
+  parseMesh,
+  schemeNames,
+  subdivide,
+  writeMesh,
+} from '../core/subdiv-core';
 import { SubdivError } from '../core/subdiv-error';
 import { type CliArgs, parseCliArgs, USAGE, UsageError } from './cli-args';
 
@@ -22,9 +30,6 @@ const processIo: CliIo = {
   stdout: (text) => process.stdout.write(text),
   stderr: (text) => process.stderr.write(text),
 };
-
-/** Schemes whose results carry control edges (custom: on the pqq and ptq hosts). */
-const PRIMAL = new Set(['catmull-clark', 'loop', 'quad-triangle', 'linear', 'linear-tri']);
 
 /** Bad input: reported as one `error:` line, exit status 1. */
 class InputError extends Error {}
@@ -132,7 +137,8 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
       otherFaces: f.otherFaces,
     };
     // Primal schemes carry the control mesh's edges (0 levels: all of them).
-    if (result.controlEdges.length > 0 || PRIMAL.has(args.scheme)) stats.controlEdges = f.controlEdges;
+    if (result.controlEdges.length > 0 || hostOf(args.scheme, rules)?.keepsControlEdges)
+      stats.controlEdges = f.controlEdges;
     stats.ms = Math.round(ms * 1000) / 1000;
     io.stdout(`${JSON.stringify(stats)}\n`);
   }

@@ -39,6 +39,7 @@ interface CoreModule {
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   scheme_names(): RawResult<{ names: string[] }>;
+  scheme_info(): RawResult<CoreSchemeInfo>;
   check_rules(rules: CompiledRules): RawResult<object>;
   heap_in_use(): number;
   throw_for_test(kind: string): RawFailure;
@@ -233,6 +234,41 @@ export function checkRules(rules: RuleSet, limits?: CompileLimits): void {
 /** Scheme names the core knows, in display order. */
 export function schemeNames(): string[] {
   return unwrap(module().scheme_names()).names;
+}
+
+/** A refinement host, as the core's one table of hosts describes it. */
+export interface HostInfo {
+  /** 'pqq', 'ptq', 'dqq', 'sqrt3' or 'pqt' (quad-triangle's). */
+  name: string;
+  /** 'PQQ', 'PTQ', 'DQQ', '√3', 'PQT'. */
+  label: string;
+  /** Refuses faces other than triangles (the core's not_triangles). */
+  needsTriangles: boolean;
+  /** Primal: results carry the control mesh's edges. */
+  keepsControlEdges: boolean;
+  /** Runs on the core's fast refinement hosts. */
+  fast: boolean;
+  /** The scheme whose counts and memory model a step follows. */
+  sizeModel: string;
+}
+
+/** What the core knows of its schemes: each scheme's host (null for custom: its rule set's) and description. */
+export interface CoreSchemeInfo {
+  hosts: HostInfo[];
+  schemes: { name: string; host: string | null; description: string }[];
+}
+
+/** The core's scheme and host table (wasm/src/core/scheme_table.cpp), in display order. */
+export function coreSchemeInfo(): CoreSchemeInfo {
+  const { hosts, schemes } = unwrap(module().scheme_info());
+  return { hosts, schemes };
+}
+
+/** The host a step of `scheme` runs on (custom: the rule set's), or undefined for an unknown scheme. */
+export function hostOf(scheme: string, rules?: RuleSet | null): HostInfo | undefined {
+  const { hosts, schemes } = coreSchemeInfo();
+  const name = scheme === 'custom' ? rules?.host : schemes.find((s) => s.name === scheme)?.host;
+  return hosts.find((h) => h.name === name);
 }
 
 /** Bytes allocated in the WebAssembly heap right now (for leak checks). */

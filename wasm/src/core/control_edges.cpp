@@ -2,7 +2,7 @@
 
 #include <CGAL/boost/graph/iterator.h>
 
-#include "custom_rules.h"
+#include "scheme_table.h"
 
 namespace subdivlab {
 namespace {
@@ -12,11 +12,8 @@ Mesh::Vertex_index vertex(std::uint32_t i) { return Mesh::Vertex_index(i); }
 }  // namespace
 
 bool scheme_keeps_control_edges(const Subdivide_options& o) {
-  const std::string& s = o.scheme;
-  if (s == "catmull-clark" || s == "loop" || s == "quad-triangle" ||
-      s == "linear" || s == "linear-tri")
-    return true;
-  return s == "custom" && custom_rules_are_primal(o.custom);
+  const Host_info* host = detail::host_of(o);
+  return host != nullptr && host->keeps_control_edges;
 }
 
 Result<Control_edges> initial_control_edges(const Mesh_buffers& in,

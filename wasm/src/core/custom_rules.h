@@ -75,17 +75,6 @@ Status check_custom_rules_cover(const Custom_rules& rules, const Mesh& mesh);
 /// valence n that the vertex table does not cover.
 Status custom_rules_valence_refusal(const Custom_rules& rules, std::size_t n);
 
-/// Whether the host needs a triangle mesh (ptq, sqrt3).
-inline bool custom_rules_need_triangles(const Custom_rules& rules) {
-  return rules.host == "ptq" || rules.host == "sqrt3";
-}
-
-/// Whether the host is primal with old vertices kept first (pqq, ptq), so
-/// that control edges can be carried.
-inline bool custom_rules_are_primal(const Custom_rules& rules) {
-  return rules.host == "pqq" || rules.host == "ptq";
-}
-
 /// The built-in rule sets, as tables for valences / degrees 3..max_valence:
 /// "catmull-clark" (pqq), "loop" (ptq), "doo-sabin" (dqq), "sqrt3" (sqrt3),
 /// "improved-loop" (ptq; CGAL's Customized_subdivision example: Warren's

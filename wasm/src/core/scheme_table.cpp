@@ -1,73 +1,99 @@
+// The one table of what the core knows of each scheme and host. The
+// options' checks, the size model, the choice of hosts, the control edges,
+// the bindings' schemeInfo() (and through it the CLI) read it.
+
 #include "scheme_table.h"
 
 #include "custom_rules.h"
 
-namespace subdivlab::detail {
+namespace subdivlab {
 
-const std::vector<Scheme_entry>& scheme_table() {
-  static const std::vector<Scheme_entry> table = {
-      {"catmull-clark", false},
-      {"loop", true},
-      {"doo-sabin", false},
-      {"sqrt3", true},
-      // Issue 4. custom's needs depend on its host (needs_triangles below).
-      {"quad-triangle", false},
-      {"linear", false},
-      {"linear-tri", true},
-      {"custom", false},
+const std::vector<Host_info>& host_table() {
+  static const std::vector<Host_info> hosts = {
+      {"pqq", false, true, true, "catmull-clark", "PQQ"},
+      {"ptq", true, true, true, "loop", "PTQ"},
+      {"dqq", false, false, false, "doo-sabin", "DQQ"},
+      {"sqrt3", true, false, false, "sqrt3", "\u221a3"},
+      {"pqt", false, true, false, "quad-triangle", "PQT"},
   };
-  return table;
+  return hosts;
 }
 
-const Scheme_entry* find_scheme(const std::string& name) {
-  for (const Scheme_entry& s : scheme_table())
+const std::vector<Scheme_info>& scheme_table() {
+  static const std::vector<Scheme_info> schemes = {
+      {"catmull-clark", "pqq",
+       "Quad refinement (PQQ): every face splits into quads; smooth, "
+       "approximating. Any polygons."},
+      {"loop", "ptq",
+       "Triangle refinement (PTQ): each triangle splits into four; smooth, "
+       "approximating. Needs triangles."},
+      {"doo-sabin", "dqq",
+       "Dual quad refinement (DQQ): new faces for every face, edge and "
+       "vertex; cuts corners. Any polygons."},
+      {"sqrt3", "sqrt3",
+       "Each triangle gets a centre vertex, then old edges flip; triples "
+       "faces per step. Needs triangles."},
+      {"quad-triangle", "pqt",
+       "Stam & Loop: triangles and quads refined together; after one step "
+       "only triangles and quads."},
+      {"linear", "pqq",
+       "Quad refinement with averaging only: centroids and midpoints, "
+       "vertices stay. Any polygons."},
+      {"linear-tri", "ptq",
+       "Midpoint split of triangles; the surface does not move. Needs "
+       "triangles."},
+      {"custom", "",
+       "Your own weights on a refinement host (PQQ, PTQ, DQQ or \u221a3): "
+       "edit them in the Rules panel."},
+  };
+  return schemes;
+}
+
+namespace detail {
+
+const Scheme_info* find_scheme(const std::string& name) {
+  for (const Scheme_info& s : scheme_table())
     if (name == s.name) return &s;
   return nullptr;
 }
 
-/// Whether the scheme of `o` needs a triangle mesh.
-bool needs_triangles(const Subdivide_options& o) {
-  if (o.scheme == "custom") return custom_rules_need_triangles(o.custom);
-  const Scheme_entry* e = find_scheme(o.scheme);
-  return e != nullptr && e->needs_triangles;
+const Host_info* find_host(const std::string& name) {
+  for (const Host_info& h : host_table())
+    if (name == h.name) return &h;
+  return nullptr;
 }
 
-/// The scheme whose counts and memory model a step of `o` follows: linear
-/// refines as catmull-clark, linear-tri as loop, custom as its host's scheme.
+const Host_info* host_of(const Subdivide_options& o) {
+  if (o.scheme == "custom") return find_host(o.custom.host);
+  const Scheme_info* s = find_scheme(o.scheme);
+  return s != nullptr ? find_host(s->host) : nullptr;
+}
+
+bool needs_triangles(const Subdivide_options& o) {
+  const Host_info* h = host_of(o);
+  return h != nullptr && h->needs_triangles;
+}
+
 std::string size_model(const Subdivide_options& o) {
-  if (o.scheme == "linear") return "catmull-clark";
-  if (o.scheme == "linear-tri") return "loop";
-  if (o.scheme == "custom") {
-    const std::string& h = o.custom.host;
-    return h == "pqq"   ? "catmull-clark"
-           : h == "ptq" ? "loop"
-           : h == "dqq" ? "doo-sabin"
-                        : "sqrt3";
-  }
-  return o.scheme;
+  const Host_info* h = host_of(o);
+  return h != nullptr ? h->size_model : o.scheme;
 }
 
 std::string scheme_list() {
   std::string s;
-  for (const Scheme_entry& e : scheme_table()) {
+  for (const Scheme_info& e : scheme_table()) {
     if (!s.empty()) s += ", ";
     s += e.name;
   }
   return s;
 }
 
-/// True when step `global_step` (0-based, counted from the control mesh) of
-/// sqrt3 refines the border: CGAL's Sqrt3 does it on the odd steps of one
-/// call (i % 2 == 1); counting from the control mesh makes k calls of one
-/// level equal one call of k levels.
 bool sqrt3_refines_border(int global_step) { return global_step % 2 == 1; }
 
-/// Whether the scheme of `o` runs on the fast primal hosts (refine/): those
-/// whose size model is catmull-clark (PQQ) or loop (PTQ), unless CGAL's
-/// hosts are asked for.
 bool runs_on_fast_host(const Subdivide_options& o) {
-  const std::string model = size_model(o);
-  return !o.cgal_hosts && (model == "catmull-clark" || model == "loop");
+  const Host_info* h = host_of(o);
+  return !o.cgal_hosts && h != nullptr && h->fast;
 }
 
-}  // namespace subdivlab::detail
+}  // namespace detail
+}  // namespace subdivlab

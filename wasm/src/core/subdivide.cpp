@@ -545,7 +545,7 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
 
 std::vector<std::string> scheme_names() {
   std::vector<std::string> names;
-  for (const Scheme_entry& s : scheme_table()) names.push_back(s.name);
+  for (const Scheme_info& s : scheme_table()) names.push_back(s.name);
   return names;
 }
 

@@ -60,4 +60,28 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& mesh,
 /// Scheme names known to subdivide_mesh, in display order.
 std::vector<std::string> scheme_names();
 
+/// A refinement host: how a step changes the connectivity. The schemes'
+/// needs and the size model are keyed by host, so that a custom rule set
+/// on a host behaves as the built-in scheme on it.
+struct Host_info {
+  std::string name;          ///< "pqq", "ptq", "dqq", "sqrt3", "pqt"
+  bool needs_triangles;      ///< refuses other faces (not_triangles)
+  bool keeps_control_edges;  ///< primal: old vertices kept first, every
+                             ///< edge split at one new vertex
+  bool fast;                 ///< runs on the fast hosts (refine/)
+  std::string size_model;    ///< the scheme whose counts a step follows
+  std::string label;         ///< "PQQ", "PTQ", "DQQ", "√3", "PQT"
+};
+
+/// A scheme: a host and the weights of its mask.
+struct Scheme_info {
+  std::string name;
+  std::string host;         ///< a Host_info name; empty for custom (its rules')
+  std::string description;  ///< one line for a picker
+};
+
+/// The hosts, and the schemes in display order.
+const std::vector<Host_info>& host_table();
+const std::vector<Scheme_info>& scheme_table();
+
 }  // namespace subdivlab
