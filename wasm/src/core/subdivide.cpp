@@ -94,29 +94,42 @@ void collect_removed(Mesh& mesh) {
 /// "pillow"). Splitting faces by edge points (PTQ), joining face centres
 /// across edges (sqrt3) or building a face per vertex (DQQ) then repeats an
 /// edge between the same two vertices, or makes a 2-gon: CGAL builds it, but
-/// it is no polygon mesh (it cannot be read back). PQQ handles it.
+/// it is no polygon mesh (it cannot be read back). PQQ handles it;
+/// quad-triangle splits triangles as PTQ does, quads as PQQ, so only a
+/// vertex between two triangles repeats an edge.
+enum class Two_valent_rule { allowed, refused, refused_between_triangles };
+
+Two_valent_rule two_valent_rule(const Subdivide_options& options) {
+  if (options.scheme == "quad-triangle")
+    return Two_valent_rule::refused_between_triangles;
+  const std::string model = size_model(options);
+  return model == "loop" || model == "sqrt3" || model == "doo-sabin"
+             ? Two_valent_rule::refused
+             : Two_valent_rule::allowed;
+}
+
+Status two_valent_refusal(const Subdivide_options& options,
+                          std::size_t vertex) {
+  return Status::error(
+      Status_code::invalid_mesh,
+      options.scheme + " cannot refine vertex " + std::to_string(vertex) +
+          ": it has only 2 edges, so its two faces share two edges and the "
+          "result would repeat edges (catmull-clark can refine it)");
+}
+
 Status check_two_valent_vertices(const Mesh& mesh,
                                  const Subdivide_options& options) {
-  const std::string model = size_model(options);
-  // quad-triangle splits triangles as PTQ does, quads as PQQ: only a vertex
-  // between two triangles repeats an edge.
-  const bool two_triangles_only = options.scheme == "quad-triangle";
-  if (model != "loop" && model != "sqrt3" && model != "doo-sabin" &&
-      !two_triangles_only)
-    return Status::success();
+  const Two_valent_rule rule = two_valent_rule(options);
+  if (rule == Two_valent_rule::allowed) return Status::success();
   for (Mesh::Vertex_index v : mesh.vertices()) {
     if (mesh.degree(v) != 2 || mesh.is_border(v)) continue;
-    if (two_triangles_only) {
+    if (rule == Two_valent_rule::refused_between_triangles) {
       const Mesh::Halfedge_index h = mesh.halfedge(v);
       if (mesh.degree(mesh.face(h)) != 3 ||
           mesh.degree(mesh.face(mesh.opposite(mesh.next(h)))) != 3)
         continue;
     }
-    return Status::error(
-        Status_code::invalid_mesh,
-        options.scheme + " cannot refine vertex " + std::to_string(v.idx()) +
-            ": it has only 2 edges, so its two faces share two edges and "
-            "the result would repeat edges (catmull-clark can refine it)");
+    return two_valent_refusal(options, v.idx());
   }
   return Status::success();
 }
@@ -217,14 +230,13 @@ Status check_finite_points(const Mesh& mesh, const Mesh_buffers& in,
   return Status::success();
 }
 
-/// check_two_valent_vertices on a level: the same refusals, the same words.
+/// check_two_valent_vertices on a level.
 Status check_two_valent_vertices(const refine::Level& l,
                                  const Subdivide_options& options) {
-  const std::string model = size_model(options);
-  const bool two_triangles_only = options.scheme == "quad-triangle";
-  if (model != "loop" && model != "sqrt3" && model != "doo-sabin" &&
-      !two_triangles_only)
-    return Status::success();
+  const Two_valent_rule rule = two_valent_rule(options);
+  if (rule == Two_valent_rule::allowed) return Status::success();
+  const bool two_triangles_only =
+      rule == Two_valent_rule::refused_between_triangles;
   // Per vertex: valence, on the border, and (quad-triangle) whether a face
   // into it is not a triangle.
   std::vector<std::uint32_t> valence(l.vertex_count, 0);
@@ -240,14 +252,9 @@ Status check_two_valent_vertices(const refine::Level& l,
       if (l.face_end(f) - l.face_begin(f) != 3) polygon[v] = true;
     }
   }
-  for (std::uint32_t v = 0; v < l.vertex_count; ++v) {
-    if (valence[v] != 2 || border[v] || polygon[v]) continue;
-    return Status::error(
-        Status_code::invalid_mesh,
-        options.scheme + " cannot refine vertex " + std::to_string(v) +
-            ": it has only 2 edges, so its two faces share two edges and "
-            "the result would repeat edges (catmull-clark can refine it)");
-  }
+  for (std::uint32_t v = 0; v < l.vertex_count; ++v)
+    if (valence[v] == 2 && !border[v] && !polygon[v])
+      return two_valent_refusal(options, v);
   return Status::success();
 }
 

@@ -39,15 +39,6 @@ namespace subdivlab {
 namespace refine {
 namespace {
 
-/// Sizes the vector to n elements; a vector too small is freed before the
-/// new block is taken (its contents are not kept), so that old and new
-/// blocks never coexist.
-template <class T>
-void size_to(std::vector<T>& v, std::size_t n) {
-  if (v.capacity() < n) std::vector<T>().swap(v);
-  v.resize(n);
-}
-
 /// The halves of parent halfedge x after the edge splits (E parent edges).
 inline std::uint32_t first_half(std::uint32_t x, std::uint32_t E) {
   return (x & 1) != 0 ? x + 2 * E : x;

@@ -6,12 +6,6 @@ namespace subdivlab {
 namespace refine {
 namespace {
 
-template <class T>
-void size_to(std::vector<T>& v, std::size_t n) {
-  if (v.capacity() < n) std::vector<T>().swap(v);
-  v.resize(n);
-}
-
 inline void add(double* to, const double* p) {
   to[0] += p[0];
   to[1] += p[1];

@@ -73,6 +73,15 @@ struct Level {
   }
 };
 
+/// Sizes the vector to n elements; a vector too small is freed before the
+/// new block is taken (its contents are not kept), so that old and new
+/// blocks never coexist.
+template <class T>
+void size_to(std::vector<T>& v, std::size_t n) {
+  if (v.capacity() < n) std::vector<T>().swap(v);
+  v.resize(n);
+}
+
 /// Bytes the tables of a level with these counts hold (marks included when
 /// `marks`; only the last level's tables when `last`), for the memory model.
 double level_bytes(double vertices, double edges, double corners, bool marks,
