@@ -6,7 +6,9 @@
 //   3. CGAL's sample meshes extracted from Debian's data set into public/
 //   4. the WASM module (CMake + Emscripten; rebuilt only when sources changed)
 //   5. the native core and its tests (with --native)
-// Usage: node scripts/setup.mjs [--wasm-only] [--native]
+//   6. tests/core as a wasm32 program for Node (with --wasm-tests)
+// CMake builds use 2 jobs; CMAKE_BUILD_PARALLEL_LEVEL sets another number.
+// Usage: node scripts/setup.mjs [--wasm-only] [--native] [--wasm-tests]
 import { spawnSync } from 'node:child_process';
 import { existsSync, lstatSync, mkdirSync, statSync, symlinkSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -14,6 +16,7 @@ import { fileURLToPath } from 'node:url';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const args = new Set(process.argv.slice(2));
+const jobs = process.env.CMAKE_BUILD_PARALLEL_LEVEL || '2';
 
 const DEBIAN_PACKAGES = [
   'emscripten',
@@ -104,20 +107,27 @@ function cmakeBuild(buildDir, configure) {
     mkdirSync(buildDir, { recursive: true });
     run(configure[0], configure.slice(1));
   }
-  run('cmake', ['--build', buildDir, '--parallel', '2']);
+  run('cmake', ['--build', buildDir, '--parallel', jobs]);
 }
 
+const wasmBuildDir = join(root, 'build', 'wasm');
+// Debian's emcc runs its JS optimizer with the system node modules (acorn).
+const emccEnv = { ...process.env, NODE_PATH: '/usr/share/nodejs' };
+
 function buildWasm() {
-  const buildDir = join(root, 'build', 'wasm');
-  const env = { ...process.env, NODE_PATH: '/usr/share/nodejs' };
-  // Debian's emcc runs its JS optimizer with the system node modules (acorn).
-  const configure = ['emcmake', 'cmake', '-S', 'wasm', '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release'];
-  if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
-    mkdirSync(buildDir, { recursive: true });
-    run(configure[0], configure.slice(1), { env });
+  const configure = ['emcmake', 'cmake', '-S', 'wasm', '-B', wasmBuildDir, '-DCMAKE_BUILD_TYPE=Release'];
+  if (!existsSync(join(wasmBuildDir, 'CMakeCache.txt'))) {
+    mkdirSync(wasmBuildDir, { recursive: true });
+    run(configure[0], configure.slice(1), { env: emccEnv });
   }
   log('building the WASM module (no-op when sources are unchanged)');
-  run('cmake', ['--build', buildDir, '--parallel', '2'], { env });
+  run('cmake', ['--build', wasmBuildDir, '--parallel', jobs], { env: emccEnv });
+}
+
+/** build/wasm/core_tests_wasm.cjs: tests/core on the module's core objects. */
+function buildWasmTests() {
+  log('building the wasm32 core tests (no-op when sources are unchanged)');
+  run('cmake', ['--build', wasmBuildDir, '--parallel', jobs, '--target', 'core_tests_wasm'], { env: emccEnv });
 }
 
 function buildNative() {
@@ -147,6 +157,7 @@ try {
   }
   buildWasm();
   if (args.has('--native')) buildNative();
+  if (args.has('--wasm-tests')) buildWasmTests();
   if (!args.has('--wasm-only') && existsSync(join(root, 'vite.cli.config.ts'))) buildCli();
 } catch (error) {
   console.error(`[setup] ${error.message}`);

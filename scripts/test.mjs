@@ -2,11 +2,13 @@
 // Every test, in order, after `node scripts/setup.mjs` (npm test runs both):
 //   1. lint        biome check + tsc --noEmit + clang-format --check
 //   2. native      build/native/core_tests (GoogleTest; built by setup.mjs --native)
-//   3. unit        vitest (tests/unit, Node against the real WASM and the CLI)
-//   4. e2e         Playwright (tests/e2e), when playwright.config.ts exists
+//   3. wasm32      the same tests built with em++, run by Node
+//                  (build/wasm/core_tests_wasm.cjs; setup.mjs --wasm-tests)
+//   4. unit        vitest (tests/unit, Node against the real WASM and the CLI)
+//   5. e2e         Playwright (tests/e2e), when playwright.config.ts exists
 // Each step's output is shown; the first failing step stops the run with a
 // non-zero exit. The last line sums the tests: "N passed, M failed".
-// Usage: node scripts/test.mjs [--skip lint,native,unit,e2e] (for local runs)
+// Usage: node scripts/test.mjs [--skip lint,native,wasm32,unit,e2e] (for local runs)
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -59,13 +61,11 @@ function lint() {
   return run(process.execPath, [join(root, 'scripts', 'clang-format.mjs'), '--check']) === 0;
 }
 
-function nativeTests() {
-  heading('native: build (setup.mjs --native)');
-  if (run(process.execPath, [join(root, 'scripts', 'setup.mjs'), '--native']) !== 0) return false;
-  heading('native: core_tests');
-  const xml = join(resultsDir, 'core_tests.xml');
+/** Runs a GoogleTest program (`cmd args…`) and counts its XML report, `report`.xml. */
+function googleTest(report, cmd, args) {
+  const xml = join(resultsDir, `${report}.xml`);
   rmSync(xml, { force: true });
-  const status = run(join(root, 'build', 'native', 'core_tests'), [`--gtest_output=xml:${xml}`]);
+  const status = run(cmd, [...args, `--gtest_output=xml:${xml}`]);
   if (existsSync(xml)) {
     const head = /<testsuites[^>]*>/.exec(readFileSync(xml, 'utf8'))?.[0] ?? '';
     const attr = (name) => Number(new RegExp(`\\b${name}="(\\d+)"`).exec(head)?.[1] ?? 0);
@@ -75,6 +75,21 @@ function nativeTests() {
     count(status, 0, 0);
   }
   return status === 0;
+}
+
+function nativeTests() {
+  heading('native: build (setup.mjs --native)');
+  if (run(process.execPath, [join(root, 'scripts', 'setup.mjs'), '--native']) !== 0) return false;
+  heading('native: core_tests');
+  return googleTest('core_tests', join(root, 'build', 'native', 'core_tests'), []);
+}
+
+/** tests/core again as wasm32 (32-bit size_t and pointers, dlmalloc), under Node. */
+function wasm32Tests() {
+  heading('wasm32: build (setup.mjs --wasm-tests)');
+  if (run(process.execPath, [join(root, 'scripts', 'setup.mjs'), '--wasm-tests']) !== 0) return false;
+  heading('wasm32: core_tests_wasm (Node)');
+  return googleTest('core_tests_wasm', process.execPath, [join(root, 'build', 'wasm', 'core_tests_wasm.cjs')]);
 }
 
 function unitTests() {
@@ -105,6 +120,7 @@ function e2eTests() {
 const steps = [
   ['lint', lint],
   ['native', nativeTests],
+  ['wasm32', wasm32Tests],
   ['unit', unitTests],
   ['e2e', e2eTests],
 ];

@@ -850,6 +850,48 @@ TEST(SubdivideMemory, BadAllocInsideCgalBecomesAnErrorAndLeaksNothing) {
   EXPECT_EQ(ok.value.face_count(), 6144u);
 }
 
+TEST(SubdivideMemory, SizesPast32BitsStayExactOnEveryTarget) {
+  // Counts and bytes of a run past 2^32 are 64-bit on every target: on wasm32
+  // (size_t of 32 bits) a size_t anywhere on the way would wrap them.
+  // Catmull-Clark on a closed genus-0 quad mesh: F = 6 * 4^n, E = 2F,
+  // V = F + 2.
+  const Mesh_buffers cube = load("cube.off");
+  const Result<Size_prediction> p16 =
+      predict_size(cube, options_for("catmull-clark", 16));
+  ASSERT_TRUE(p16.ok()) << p16.status.message;
+  const std::uint64_t faces = std::uint64_t{6} << 32;  // 6 * 4^16
+  EXPECT_EQ(p16.value.faces, faces);
+  EXPECT_EQ(p16.value.edges, 2 * faces);
+  EXPECT_EQ(p16.value.vertices, faces + 2);
+  // The step's bytes per face do not depend on the level once the fixed
+  // allocations vanish: level 16 (past 2^32 bytes) costs what level 8 does.
+  const Result<Size_prediction> p8 =
+      predict_size(cube, options_for("catmull-clark", 8));
+  ASSERT_TRUE(p8.ok()) << p8.status.message;
+  const double per_face_16 =
+      static_cast<double>(p16.value.peak_bytes) / static_cast<double>(faces);
+  const double per_face_8 = static_cast<double>(p8.value.peak_bytes) /
+                            static_cast<double>(p8.value.faces);
+  EXPECT_GT(p16.value.peak_bytes, std::uint64_t{1} << 32);
+  EXPECT_NEAR(per_face_16, per_face_8, 0.05 * per_face_8);
+  // Without a memory limit the run is refused before its first step, at the
+  // first level whose halfedges 32-bit indices cannot number: level 14
+  // (2E = 24 * 4^14 > 2^32 - 2).
+  const Result<Mesh_buffers> r =
+      subdivide_mesh(cube, options_for("catmull-clark", 16));
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status.code, Status_code::too_large);
+  EXPECT_EQ(
+      r.status.message.rfind("level 14 of catmull-clark would need about ", 0),
+      0u)
+      << r.status.message;
+  EXPECT_NE(r.status.message.find("(predicted 1.61 G vertices, 1.61 G "
+                                  "faces), more elements than a mesh can "
+                                  "index (2^32)"),
+            std::string::npos)
+      << r.status.message;
+}
+
 /// Quads of a torus, nu x nv.
 Mesh_buffers torus(int nu, int nv, bool triangles) {
   Poly_mesh m;
