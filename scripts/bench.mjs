@@ -10,23 +10,29 @@
 // warm-up), ns and predicted peak bytes per output face, and the WASM time
 // as a ratio to native CGAL and to OpenSubdiv. Then parse and write MB/s of
 // OFF and OBJ in Node through the WASM module (bunny00, CGAL's
-// refined_elephant and bunny00 after two Loop steps). Writes
-// build/bench.json.
-// Usage: node scripts/bench.mjs [MESH.off] [--runs N] [--io-only]
+// refined_elephant and bunny00 after two Loop steps). Then the app's time to
+// screen in Chromium (scripts/bench-app.mjs). Writes build/bench.json.
+// Usage: node scripts/bench.mjs [MESH.off] [--runs N] [--io-only | --app-only]
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { basename, dirname, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { benchApp, printApp } from './bench-app.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const SCHEMES = ['catmull-clark', 'loop', 'doo-sabin', 'sqrt3'];
 const OSD_SCHEMES = ['catmull-clark', 'loop'];
 
 const argv = process.argv.slice(2);
-const ioOnlyAt = argv.indexOf('--io-only');
-const ioOnly = ioOnlyAt >= 0;
-if (ioOnly) argv.splice(ioOnlyAt, 1);
+/** Takes `flag` out of argv; true when it was there. */
+function takeFlag(flag) {
+  const at = argv.indexOf(flag);
+  if (at >= 0) argv.splice(at, 1);
+  return at >= 0;
+}
+const ioOnly = takeFlag('--io-only');
+const appOnly = takeFlag('--app-only');
 const runsAt = argv.indexOf('--runs');
 const runs = runsAt >= 0 ? Number(argv.splice(runsAt, 2)[1]) : 5;
 const defaultMesh = join(root, 'public', 'meshes', 'cgal', 'bunny00.off');
@@ -201,13 +207,17 @@ async function benchInputOutput() {
 }
 
 const pad = (s, n) => String(s).padEnd(n);
-const schemes = ioOnly ? { rows: [], raw: [] } : await benchSchemes();
-const io = await benchInputOutput();
+const schemes = ioOnly || appOnly ? { rows: [], raw: [] } : await benchSchemes();
+const io = appOnly ? [] : await benchInputOutput();
 const machine = `${cpus()[0]?.model ?? 'unknown CPU'}, ${cpus().length} cores, Node ${process.version}`;
-console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);
+if (!appOnly) console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);
+// A page load and two steps per run: at most three.
+const appRuns = Math.min(runs, 3);
+const app = ioOnly ? [] : await benchApp(appRuns);
+printApp(app, appRuns);
 
 mkdirSync(join(root, 'build'), { recursive: true });
 writeFileSync(
   join(root, 'build', 'bench.json'),
-  `${JSON.stringify({ mesh: basename(meshPath), runs, machine, ...schemes, io }, null, 2)}\n`,
+  `${JSON.stringify({ mesh: basename(meshPath), runs, machine, ...schemes, io, app }, null, 2)}\n`,
 );

@@ -60,9 +60,14 @@ for (const scheme of ['catmull-clark', 'doo-sabin', 'loop', 'sqrt3']) {
       });
     }
     await test.step('scrub: levels switch at once, counts follow', async () => {
+      // The view draws the level shown, after the steps' draws (the benchmark's "on screen").
+      await expect.poll(async () => (await app.state()).drawn?.level).toBe(2);
+      const drawnAt = (await app.state()).drawn?.at ?? Number.POSITIVE_INFINITY;
       await app.scrubTo(0);
       expect((await app.facts()).faces).toBe(6);
       await expect(app.byTestId('facts.time')).toHaveText('–');
+      await expect.poll(async () => (await app.state()).drawn?.level).toBe(0);
+      expect((await app.state()).drawn?.at).toBeGreaterThan(drawnAt);
       await app.scrubTo(1);
       expect((await app.facts()).faces).toBe(expectedClosedCounts(scheme, start, 1).faces);
       await app.scrubTo(2);

@@ -263,6 +263,7 @@ export class AppShell {
           smoothBoundary: !this.fixedBoundary,
           modelSource: this.source ? { ...this.source } : null,
           notice: this.notice.text,
+          drawn: this.viewer.lastDraw ? { ...this.viewer.lastDraw } : null,
         };
       },
       shareLink: () => {

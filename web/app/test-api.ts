@@ -6,6 +6,7 @@ import type { MeshFacts } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
+import type { DrawnLevel } from '../viewer/subdiv-viewer';
 import type { ModelSource } from './share-actions';
 
 export interface TestError {
@@ -45,6 +46,8 @@ export interface SubdivLabTestState {
   modelSource: ModelSource | null;
   /** The non-blocking notice shown (e.g. ignored link values), null when hidden. */
   notice: string | null;
+  /** The level the view last drew and performance.now() when that picture was in its canvas (null before a model). */
+  drawn: DrawnLevel | null;
 }
 
 export interface SubdivLabTestApi {

@@ -81,6 +81,8 @@ export class SceneView {
   private onScreen = true;
   /** Called after the camera moved (pointer, keys, fit or setView). */
   onViewChange: (() => void) | null = null;
+  /** Called when a picture of the view is in its canvas (after each {@link render}). */
+  onDraw: (() => void) | null = null;
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = sharedRenderer();
@@ -319,6 +321,7 @@ export class SceneView {
   render(): void {
     this.dirty = false;
     this.renderer.draw(this.scene, this.camera, this.context, this.canvas.width, this.canvas.height, this.background);
+    this.onDraw?.();
   }
 
   /** Size of the view in CSS pixels. */

@@ -49,6 +49,12 @@ export interface BusyState {
   since: number;
 }
 
+/** The level whose picture the view last put in its canvas, and performance.now() when it did. */
+export interface DrawnLevel {
+  level: number;
+  at: number;
+}
+
 /** A snapshot of the viewer, for panels and tests. */
 export interface ViewerState {
   modelName: string | null;
@@ -90,6 +96,7 @@ export class SubdivViewer {
   /** A step is between its prediction and its result (possibly waiting for a confirmation). */
   private stepping = false;
   private disposed = false;
+  private drawn: DrawnLevel | null = null;
 
   constructor(container: HTMLElement, options: SubdivViewerOptions = {}) {
     this.core = (options.client ?? pageCore()).session();
@@ -98,6 +105,9 @@ export class SubdivViewer {
     this.confirmLargeStep = options.confirmLargeStep ?? (async () => false);
     this.view = new SceneView(container);
     if (options.renderMode) this.view.setRenderMode(options.renderMode);
+    this.view.onDraw = () => {
+      if (this.levels.length > 0) this.drawn = { level: this.current, at: performance.now() };
+    };
     this.view.onViewChange = () => {
       if (this.viewListeners.size === 0) return;
       const view = this.view.getView();
@@ -128,6 +138,15 @@ export class SubdivViewer {
       },
       busy: this.busyState,
     };
+  }
+
+  /**
+   * The last picture drawn (null before a model): its level and when it was
+   * in the canvas, the GPU's work read back included. A level is on screen
+   * from then on; the benchmark times a step to it.
+   */
+  get lastDraw(): DrawnLevel | null {
+    return this.drawn;
   }
 
   /**
