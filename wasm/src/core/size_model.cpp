@@ -472,13 +472,9 @@ Counts counts_of(const refine::Level& l) {
   c.edges = l.edge_count;
   c.faces = l.face_count;
   c.border_edges = l.border_edge_count;
-  std::vector<std::uint32_t> valence(l.vertex_count, 0);
-  std::vector<bool> border(l.vertex_count, false);
-  const std::uint32_t* t = l.halfedge_target.data();
-  for (std::uint32_t h = 0; h < 2 * l.edge_count; ++h) {
-    ++valence[t[h]];
-    if (l.halfedge_corner[h] == refine::kNone) border[t[h]] = true;
-  }
+  std::vector<std::uint32_t> valence;
+  std::vector<bool> border;
+  refine::vertex_valences(l, valence, border);
   for (std::uint32_t v = 0; v < l.vertex_count; ++v) {
     if (!border[v]) continue;
     c.border_ears += valence[v] == 2;

@@ -237,19 +237,16 @@ Status check_two_valent_vertices(const refine::Level& l,
   if (rule == Two_valent_rule::allowed) return Status::success();
   const bool two_triangles_only =
       rule == Two_valent_rule::refused_between_triangles;
-  // Per vertex: valence, on the border, and (quad-triangle) whether a face
-  // into it is not a triangle.
-  std::vector<std::uint32_t> valence(l.vertex_count, 0);
-  std::vector<bool> border(l.vertex_count, false), polygon(l.vertex_count);
-  const std::uint32_t* t = l.halfedge_target.data();
-  for (std::uint32_t h = 0; h < 2 * l.edge_count; ++h) {
-    const std::uint32_t v = t[h], c = l.halfedge_corner[h];
-    ++valence[v];
-    if (c == refine::kNone) {
-      border[v] = true;
-    } else if (two_triangles_only) {
-      const std::uint32_t f = l.corner_face(c);
-      if (l.face_end(f) - l.face_begin(f) != 3) polygon[v] = true;
+  std::vector<std::uint32_t> valence;
+  std::vector<bool> border, polygon(l.vertex_count, false);
+  refine::vertex_valences(l, valence, border);
+  if (two_triangles_only) {
+    // A vertex a face other than a triangle comes into.
+    for (std::uint32_t f = 0; f < l.face_count; ++f) {
+      const std::uint32_t begin = l.face_begin(f), end = l.face_end(f);
+      if (end - begin == 3) continue;
+      for (std::uint32_t i = begin; i < end; ++i)
+        polygon[l.face_vertices[i]] = true;
     }
   }
   for (std::uint32_t v = 0; v < l.vertex_count; ++v)

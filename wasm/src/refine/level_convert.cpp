@@ -116,6 +116,17 @@ Level level_from_buffers(const Mesh_buffers& in,
   return l;
 }
 
+void vertex_valences(const Level& level, std::vector<std::uint32_t>& valence,
+                     std::vector<bool>& border) {
+  valence.assign(level.vertex_count, 0);
+  border.assign(level.vertex_count, false);
+  const std::uint32_t* t = level.halfedge_target.data();
+  for (std::uint32_t h = 0; h < 2 * level.edge_count; ++h) {
+    ++valence[t[h]];
+    if (level.halfedge_corner[h] == kNone) border[t[h]] = true;
+  }
+}
+
 Vertex_halfedges vertex_halfedges(const Level& level) {
   Vertex_halfedges r;
   r.begin.assign(std::size_t{level.vertex_count} + 1, 0);

@@ -26,6 +26,10 @@ Level level_from_mesh(const Mesh& mesh);
 Level level_from_buffers(const Mesh_buffers& in,
                          const std::vector<std::uint32_t>& corner_halfedges);
 
+/// Each vertex's valence and whether it is on the border.
+void vertex_valences(const Level& level, std::vector<std::uint32_t>& valence,
+                     std::vector<bool>& border);
+
 /// The halfedges leaving each vertex, for finding the edge between two
 /// vertices: begin[v] .. begin[v + 1] in `halfedges`.
 struct Vertex_halfedges {

@@ -124,16 +124,6 @@ inline void put_face(Level& c, std::uint32_t face, const std::uint32_t (&v)[K],
 
 }  // namespace
 
-Child_counts pqq_counts(const Level& p) {
-  return {double(p.vertex_count) + p.edge_count + p.face_count,
-          2.0 * p.edge_count + p.corner_count(), double(p.corner_count())};
-}
-
-Child_counts ptq_counts(const Level& p) {
-  return {double(p.vertex_count) + p.edge_count,
-          2.0 * p.edge_count + 3.0 * p.face_count, 4.0 * p.face_count};
-}
-
 void refine_pqq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
                       S = p.corner_count();

@@ -19,13 +19,6 @@
 namespace subdivlab {
 namespace refine {
 
-/// Child counts of one step. Corners = 4 * child faces for both hosts.
-struct Child_counts {
-  double vertices = 0, edges = 0, faces = 0;
-};
-Child_counts pqq_counts(const Level& parent);
-Child_counts ptq_counts(const Level& parent);
-
 /// The child level's topology (everything but positions): counts,
 /// face_halfedges, halfedge_target, halfedge_corner unless `last` (the
 /// last level needs no further step), border count, edge marks. `child`'s
