@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/dqq_border_3.h"
+#include "core/level_view.h"
 #include "core/mesh_build.h"
 #include "core/mesh_facts.h"
 #include "core/mesh_io.h"
@@ -1004,6 +1005,59 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
         "%.0f B/face\n",
         p.scheme, p.mesh, faces, measured, model, model / measured,
         measured / faces);
+    EXPECT_GE(model, measured) << p.scheme << " on " << p.mesh;
+    EXPECT_LE(model, 1.5 * measured) << p.scheme << " on " << p.mesh;
+  }
+}
+
+// A step for the viewer (level_view.h) builds the render arrays while the
+// result and the input are alive: the model with render_buffers bounds it.
+TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfAViewedStep) {
+  struct Probe {
+    const char* scheme;
+    const char* mesh;
+    Mesh_buffers in;
+  };
+  const std::vector<Probe> probes = {
+      {"catmull-clark", "quad torus 160x80", torus(160, 80, false)},
+      {"loop", "tri torus 160x80", torus(160, 80, true)},
+      {"loop", "tri grid 120x100", grid(120, 100, true)},
+      {"doo-sabin", "quad grid 120x100", grid(120, 100, false)},
+      {"sqrt3", "tri torus 160x80", torus(160, 80, true)},
+  };
+  // The bindings copy each array out of the heap: a sink that keeps none.
+  struct Discard : Render_sink {
+    void floats(Render_array, const std::vector<float>&) override {}
+    void indices(Render_array, const std::vector<std::uint32_t>&) override {}
+  } discard;
+  for (const Probe& p : probes) {
+    Subdivide_options o = options_for(p.scheme, 1);
+    Subdivide_options viewed = o;
+    viewed.render_buffers = true;
+    const Result<Size_prediction> plain = predict_size(p.in, o);
+    const Result<Size_prediction> predicted = predict_size(p.in, viewed);
+    ASSERT_TRUE(predicted.ok());
+    EXPECT_GE(predicted.value.peak_bytes, plain.value.peak_bytes);
+    const Mesh_facts facts = compute_facts(p.in).value;
+    const std::size_t input = p.in.positions.size() * 8 +
+                              p.in.face_sizes.size() * 4 +
+                              p.in.face_indices.size() * 4;
+    const std::size_t before = g_live;
+    g_peak = before;
+    std::size_t faces = 0;
+    {
+      Mesh_buffers out;
+      const Result<Mesh_facts> r = view_step(p.in, o, facts, out, discard);
+      ASSERT_TRUE(r.ok());
+      faces = r.value.faces;
+    }
+    const double measured = static_cast<double>(g_peak - before + input);
+    const double model = static_cast<double>(predicted.value.peak_bytes);
+    std::printf(
+        "  %-14s %-26s %8zu faces, viewed: measured %9.0f B, model %9.0f B "
+        "(%.2fx, without the arrays %9.0f B), %.0f B/face\n",
+        p.scheme, p.mesh, faces, measured, model, model / measured,
+        static_cast<double>(plain.value.peak_bytes), measured / faces);
     EXPECT_GE(model, measured) << p.scheme << " on " << p.mesh;
     EXPECT_LE(model, 1.5 * measured) << p.scheme << " on " << p.mesh;
   }

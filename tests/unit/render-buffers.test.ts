@@ -1,9 +1,13 @@
-/** renderBuffers: fan triangles for the GPU and the polygon edge list (quads stay quads). */
+/**
+ * A level as the viewer takes it, from the core (viewMesh, subdivideForView):
+ * fan triangles, the polygon edge list (quads stay quads), normals, and the
+ * facts of a step equal to the facts computed afresh.
+ */
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
-import type { Mesh } from '../../web/core/mesh';
-import { renderBuffers } from '../../web/core/render-buffers';
-import { meshFacts, subdivide } from '../../web/core/subdiv-core';
+import type { Mesh, SchemeName } from '../../web/core/mesh';
+import { meshFacts, predictSize, subdivide, subdivideForView, viewMesh } from '../../web/core/subdiv-core';
+import { SubdivError } from '../../web/core/subdiv-error';
 import { loadFixture } from './test-helpers';
 
 beforeAll(async () => {
@@ -16,10 +20,10 @@ function edgeSet(edges: Uint32Array): Set<string> {
   return set;
 }
 
-describe('renderBuffers', () => {
+describe('render buffers from the core', () => {
   it('draws the cube as 12 triangles and 12 edges, no diagonals', () => {
     const cube = loadFixture('cube.off');
-    const r = renderBuffers(cube);
+    const r = viewMesh(cube).buffers;
     expect(r.triangles.length).toBe(36);
     expect(r.triangleFace.length).toBe(12);
     expect(Array.from(r.triangleFace)).toEqual([0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5]);
@@ -35,6 +39,11 @@ describe('renderBuffers', () => {
     }
     expect(r.positions).toBeInstanceOf(Float32Array);
     expect(Array.from(r.positions)).toEqual(Array.from(cube.positions));
+    // Each corner of the cube: its normal points away from the centre, into its octant.
+    for (let v = 0; v < 8; v++) {
+      for (let k = 0; k < 3; k++) expect(Math.sign(r.normals[3 * v + k])).toBe(Math.sign(cube.positions[3 * v + k]));
+      expect(Math.hypot(r.normals[3 * v], r.normals[3 * v + 1], r.normals[3 * v + 2])).toBeCloseTo(1, 6);
+    }
   });
 
   it('fans each polygon from its first corner, keeping its orientation', () => {
@@ -44,10 +53,13 @@ describe('renderBuffers', () => {
       faceIndices: new Uint32Array([0, 1, 2, 3, 4]),
       controlEdges: new Uint32Array(0),
     };
-    const r = renderBuffers(pentagon);
+    const r = viewMesh(pentagon).buffers;
     expect(Array.from(r.triangles)).toEqual([0, 1, 2, 0, 2, 3, 0, 3, 4]);
     expect(Array.from(r.triangleFace)).toEqual([0, 0, 0]);
-    expect(Array.from(r.edges)).toEqual([0, 1, 1, 2, 2, 3, 3, 4, 0, 4]);
+    // Edges by their smaller vertex, then in the order they appear.
+    expect(Array.from(r.edges)).toEqual([0, 1, 0, 4, 1, 2, 2, 3, 3, 4]);
+    // Counter-clockwise seen from +z: every normal is +z.
+    expect(Array.from(r.normals)).toEqual([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]);
   });
 
   it.each(['mixed-open.off', 'torus-quad.off', 'rhombicuboctahedron.off'])(
@@ -55,14 +67,47 @@ describe('renderBuffers', () => {
     (fixture) => {
       const base = loadFixture(fixture);
       for (const mesh of [base, subdivide(base, { scheme: 'catmull-clark', levels: 2 })]) {
-        const r = renderBuffers(mesh);
+        const r = viewMesh(mesh).buffers;
         const facts = meshFacts(mesh);
         expect(r.edges.length / 2).toBe(facts.edges);
         expect(edgeSet(r.edges).size).toBe(facts.edges);
         const expectedTriangles = Array.from(mesh.faceSizes).reduce((s, k) => s + k - 2, 0);
         expect(r.triangles.length / 3).toBe(expectedTriangles);
         expect(Math.max(...r.triangles)).toBeLessThan(facts.vertices);
+        expect(r.normals.length).toBe(3 * facts.vertices);
       }
     },
   );
+});
+
+describe('subdivideForView', () => {
+  const schemes: SchemeName[] = ['catmull-clark', 'loop', 'doo-sabin', 'sqrt3', 'quad-triangle', 'linear'];
+  it.each(schemes)('%s on the open mixed mesh: the same mesh as subdivide, facts as computed afresh', (scheme) => {
+    let mesh = loadFixture('mixed-open.off');
+    let facts = meshFacts(mesh);
+    for (let level = 1; level <= 2; level++) {
+      const options = { scheme, levels: 1, startLevel: level - 1, triangulate: true };
+      const view = subdivideForView(mesh, options, facts);
+      const plain = subdivide(mesh, options);
+      expect(view.mesh.positions).toEqual(plain.positions);
+      expect(view.mesh.faceIndices).toEqual(plain.faceIndices);
+      expect(view.facts).toEqual(meshFacts(plain));
+      expect(view.buffers.edges.length / 2).toBe(view.facts.edges);
+      mesh = view.mesh;
+      facts = view.facts;
+    }
+  });
+
+  it('counts the render buffers in the prediction and fails as subdivide does', () => {
+    const torus = loadFixture('torus-tri.off');
+    const plain = predictSize(torus, { scheme: 'loop', levels: 1 });
+    const viewed = predictSize(torus, { scheme: 'loop', levels: 1, renderBuffers: true });
+    expect(viewed.faces).toBe(plain.faces);
+    expect(viewed.peakBytes).toBeGreaterThan(plain.peakBytes);
+    const cube = loadFixture('cube.off');
+    expect(() => subdivideForView(cube, { scheme: 'loop', levels: 1 }, meshFacts(cube))).toThrow(SubdivError);
+    expect(() => subdivideForView(cube, { scheme: 'loop', levels: 1 }, meshFacts(cube))).toThrow(
+      /loop needs a triangle mesh/,
+    );
+  });
 });

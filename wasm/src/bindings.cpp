@@ -18,15 +18,18 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <limits>
 #include <new>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/level_view.h"
 #include "core/mesh_facts.h"
 #include "core/mesh_io.h"
 #include "core/mesh_types.h"
+#include "core/render_buffers.h"
 #include "core/subdivide.h"
 
 using emscripten::val;
@@ -170,7 +173,7 @@ Status from_js_rules(const val& js, Custom_rules& rules) {
 }
 
 /// Reads { scheme, levels, startLevel, triangulate, memoryLimitBytes,
-/// smoothBoundary, rules }.
+/// smoothBoundary, rules, renderBuffers }.
 Status from_js_options(const val& js, Subdivide_options& options) {
   if (!js.isUndefined() && !js.isNull()) {
     const val scheme = js["scheme"];
@@ -203,6 +206,8 @@ Status from_js_options(const val& js, Subdivide_options& options) {
     const val triangulate = js["triangulate"];
     if (!triangulate.isUndefined())
       options.triangulate = triangulate.as<bool>();
+    const val render = js["renderBuffers"];
+    if (!render.isUndefined()) options.render_buffers = render.as<bool>();
     const val smooth = js["smoothBoundary"];
     if (!smooth.isUndefined()) options.smooth_boundary = smooth.as<bool>();
     const val rules = js["rules"];
@@ -335,29 +340,119 @@ val to_js_point(const std::array<double, 3>& p) {
   return out;
 }
 
+val to_js_facts(const Mesh_facts& f) {
+  val facts = val::object();
+  facts.set("vertices", static_cast<double>(f.vertices));
+  facts.set("edges", static_cast<double>(f.edges));
+  facts.set("faces", static_cast<double>(f.faces));
+  facts.set("components", static_cast<double>(f.components));
+  facts.set("boundaries", static_cast<double>(f.boundaries));
+  facts.set("eulerCharacteristic", static_cast<double>(f.euler_characteristic));
+  facts.set("genus", static_cast<double>(f.genus));
+  facts.set("closed", f.closed);
+  facts.set("triangles", static_cast<double>(f.triangles));
+  facts.set("quads", static_cast<double>(f.quads));
+  facts.set("otherFaces", static_cast<double>(f.other_faces));
+  facts.set("bboxMin", to_js_point(f.bbox_min));
+  facts.set("bboxMax", to_js_point(f.bbox_max));
+  facts.set("controlEdges", static_cast<double>(f.control_edges));
+  return facts;
+}
+
+/// The parent facts a step carries (refined_facts checks them against the
+/// counts, so numbers that are not whole only cost a CGAL pass).
+Mesh_facts from_js_facts(const val& js) {
+  Mesh_facts f;
+  const auto count = [&js](const char* key) {
+    const val v = js[key];
+    if (!v.isNumber()) return -1.0;
+    const double d = v.as<double>();
+    return std::isfinite(d) ? d : -1.0;
+  };
+  const double components = count("components");
+  const double boundaries = count("boundaries");
+  const double chi = count("eulerCharacteristic");
+  if (components >= 0 && components < 1e15)
+    f.components = static_cast<std::size_t>(components);
+  if (boundaries >= 0 && boundaries < 1e15)
+    f.boundaries = static_cast<std::size_t>(boundaries);
+  // Without one, a characteristic no mesh has: the counts then disagree.
+  f.euler_characteristic =
+      js["eulerCharacteristic"].isNumber() && std::abs(chi) < 1e15
+          ? static_cast<long>(chi)
+          : std::numeric_limits<long>::min();
+  return f;
+}
+
+/// Hands each render array to JS as a copy, under its name in `out`.
+class Js_render_sink : public Render_sink {
+ public:
+  val out = val::object();
+  void floats(Render_array which, const std::vector<float>& v) override {
+    out.set(name(which), to_js_array("Float32Array", v));
+  }
+  void indices(Render_array which,
+               const std::vector<std::uint32_t>& v) override {
+    out.set(name(which), to_js_array("Uint32Array", v));
+  }
+
+ private:
+  static const char* name(Render_array which) {
+    switch (which) {
+      case Render_array::positions:
+        return "positions";
+      case Render_array::normals:
+        return "normals";
+      case Render_array::triangles:
+        return "triangles";
+      case Render_array::triangle_face:
+        return "triangleFace";
+      case Render_array::edges:
+        return "edges";
+    }
+    return "edges";
+  }
+};
+
 val js_facts(const val& mesh) {
   return guarded([&] {
     const Result<Mesh_facts> result = compute_facts(from_js_mesh(mesh));
     if (!result.ok()) return to_js_status(result.status);
-    const Mesh_facts& f = result.value;
-    val facts = val::object();
-    facts.set("vertices", static_cast<double>(f.vertices));
-    facts.set("edges", static_cast<double>(f.edges));
-    facts.set("faces", static_cast<double>(f.faces));
-    facts.set("components", static_cast<double>(f.components));
-    facts.set("boundaries", static_cast<double>(f.boundaries));
-    facts.set("eulerCharacteristic",
-              static_cast<double>(f.euler_characteristic));
-    facts.set("genus", static_cast<double>(f.genus));
-    facts.set("closed", f.closed);
-    facts.set("triangles", static_cast<double>(f.triangles));
-    facts.set("quads", static_cast<double>(f.quads));
-    facts.set("otherFaces", static_cast<double>(f.other_faces));
-    facts.set("bboxMin", to_js_point(f.bbox_min));
-    facts.set("bboxMax", to_js_point(f.bbox_max));
-    facts.set("controlEdges", static_cast<double>(f.control_edges));
     val out = ok_object();
-    out.set("facts", facts);
+    out.set("facts", to_js_facts(result.value));
+    return out;
+  });
+}
+
+/// { facts, buffers } of a loaded mesh.
+val js_view_mesh(const val& mesh) {
+  return guarded([&] {
+    Js_render_sink sink;
+    const Result<Mesh_facts> facts = view_mesh(from_js_mesh(mesh), sink);
+    if (!facts.ok()) return to_js_status(facts.status);
+    val out = ok_object();
+    out.set("facts", to_js_facts(facts.value));
+    out.set("buffers", sink.out);
+    return out;
+  });
+}
+
+/// { mesh, facts, buffers } of a step from a mesh whose facts are `parent`.
+val js_subdivide_view(const val& mesh, const val& js_options,
+                      const val& parent) {
+  return guarded([&] {
+    Subdivide_options options;
+    const Status status = from_js_options(js_options, options);
+    if (!status.ok()) return to_js_status(status);
+    Mesh_buffers result;
+    Js_render_sink sink;
+    const Result<Mesh_facts> facts = view_step(
+        from_js_mesh(mesh), options, from_js_facts(parent), result, sink);
+    if (!facts.ok()) return to_js_status(facts.status);
+    val out = ok_object();
+    out.set("mesh", to_js_mesh(result));
+    out.set("facts", to_js_facts(facts.value));
+    out.set("buffers", sink.out);
     return out;
   });
 }
@@ -450,6 +545,8 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("subdivide", &subdivlab::js_subdivide);
   emscripten::function("predict_size", &subdivlab::js_predict_size);
   emscripten::function("facts", &subdivlab::js_facts);
+  emscripten::function("view_mesh", &subdivlab::js_view_mesh);
+  emscripten::function("subdivide_view", &subdivlab::js_subdivide_view);
   emscripten::function("scheme_names", &subdivlab::js_scheme_names);
   emscripten::function("scheme_info", &subdivlab::js_scheme_info);
   emscripten::function("check_rules", &subdivlab::js_check_rules);

@@ -38,6 +38,11 @@ export interface SubdivideOptions {
   smoothBoundary?: boolean;
   /** custom: the host and weights (rule-set.ts); required for scheme 'custom'. */
   rules?: RuleSet;
+  /**
+   * The caller also wants the result's render buffers ({@link subdivideForView}):
+   * the memory check and prediction include them. Default false.
+   */
+  renderBuffers?: boolean;
 }
 
 export interface SizePrediction {
@@ -51,6 +56,13 @@ export interface SizePrediction {
    * what the WASM heap can still take (4 GB minus what is in use, minus a margin).
    */
   memoryLimitBytes?: number;
+}
+
+/** A level as a viewer takes it: the mesh, its facts and its render buffers, from one call of the core. */
+export interface LevelView {
+  mesh: Mesh;
+  facts: MeshFacts;
+  buffers: RenderBuffers;
 }
 
 export interface MeshFacts {
@@ -70,12 +82,17 @@ export interface MeshFacts {
   controlEdges: number;
 }
 
-/** What the GPU draws: positions as float32, polygons fanned into triangles, and polygon edges. */
+/**
+ * What the GPU draws, built by the core beside the mesh: positions and
+ * normals as float32, polygons fanned into triangles, and polygon edges.
+ */
 export interface RenderBuffers {
   positions: Float32Array;
+  /** Unit vertex normals: fan triangle normals weighted by area, summed (three.js's computeVertexNormals). */
+  normals: Float32Array;
   /** Triangle vertex indices (3 per triangle). */
   triangles: Uint32Array;
-  /** Unique polygon edges as vertex index pairs (quads stay quads: no diagonals). */
+  /** Unique polygon edges as vertex index pairs, smaller index first, ordered by it (quads stay quads: no diagonals). */
   edges: Uint32Array;
   /** For each triangle, the polygon (face) it came from. */
   triangleFace: Uint32Array;

@@ -6,7 +6,7 @@
  * message and line. Nothing else in the project imports ./generated/.
  */
 import createSubdivModule from './generated/subdivlab.mjs';
-import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
+import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
 import { SubdivError, type SubdivErrorCode } from './subdiv-error';
 
@@ -38,6 +38,8 @@ interface CoreModule {
   subdivide(mesh: Mesh, options: CoreOptions): RawResult<{ mesh: Mesh }>;
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
+  view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
+  subdivide_view(mesh: Mesh, options: CoreOptions, parent: MeshFacts): RawResult<LevelView>;
   scheme_names(): RawResult<{ names: string[] }>;
   scheme_info(): RawResult<CoreSchemeInfo>;
   check_rules(rules: CompiledRules): RawResult<object>;
@@ -197,6 +199,18 @@ export function subdivide(mesh: Mesh, options: SubdivideOptions): Mesh {
 }
 
 /**
+ * {@link subdivide} and, in the same call, the result's facts and render
+ * buffers: what a viewer shows. `parent` is the facts of `mesh`: the
+ * result's components and boundary loops are carried from them (every
+ * scheme keeps them) and the rest is counted, so no mesh structure is built
+ * for the facts; facts that disagree with the counts are computed afresh.
+ */
+export function subdivideForView(mesh: Mesh, options: SubdivideOptions, parent: MeshFacts): LevelView {
+  const { mesh: result, facts, buffers } = unwrap(module().subdivide_view(mesh, coreOptions(mesh, options), parent));
+  return { mesh: result, facts, buffers };
+}
+
+/**
  * The options as the core takes them: `rules` evaluated into tables large
  * enough for `mesh` (valences and degrees 3..max(64, what the mesh has)).
  */
@@ -218,6 +232,12 @@ export function predictSize(mesh: Mesh, options: SubdivideOptions): SizePredicti
 /** Vertices, edges, faces, components, boundaries, genus, face kinds, bounding box. */
 export function meshFacts(mesh: Mesh): MeshFacts {
   return unwrap(module().facts(mesh)).facts;
+}
+
+/** A loaded mesh as a viewer shows it: its facts ({@link meshFacts}) and render buffers. */
+export function viewMesh(mesh: Mesh): LevelView {
+  const { facts, buffers } = unwrap(module().view_mesh(mesh));
+  return { mesh, facts, buffers };
 }
 
 /**

@@ -3,17 +3,15 @@
  * stays responsive during a long step. It imports the core's TS API only
  * (never ./generated/), answers one request at a time and transfers results.
  */
-import type { Mesh } from './mesh';
-import { renderBuffers } from './render-buffers';
 import {
   checkRules,
   exportMeshChunks,
   init,
-  meshFacts,
   parseMesh,
   predictSize,
   schemeNames,
-  subdivide,
+  subdivideForView,
+  viewMesh,
 } from './subdiv-core';
 import { SubdivError } from './subdiv-error';
 import type {
@@ -31,10 +29,6 @@ interface WorkerScope {
 }
 const scope = self as unknown as WorkerScope;
 
-function levelData(mesh: Mesh, ms: number): LevelData {
-  return { mesh, facts: meshFacts(mesh), buffers: renderBuffers(mesh), ms };
-}
-
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
 function buffersOf(level: LevelData): Transferable[] {
   const arrays = [
@@ -43,6 +37,7 @@ function buffersOf(level: LevelData): Transferable[] {
     level.mesh.faceIndices,
     level.mesh.controlEdges,
     level.buffers.positions,
+    level.buffers.normals,
     level.buffers.triangles,
     level.buffers.edges,
     level.buffers.triangleFace,
@@ -61,18 +56,17 @@ const handlers: Handlers = {
   },
   async parse({ text, format }) {
     await init();
-    return levelData(parseMesh(text, format), 0);
+    return { ...viewMesh(parseMesh(text, format)), ms: 0 };
   },
   async prepare({ mesh }) {
     await init();
-    return levelData(mesh, 0);
+    return { ...viewMesh(mesh), ms: 0 };
   },
-  async subdivide({ mesh, options }) {
+  async subdivide({ mesh, options, parent }) {
     await init();
     const start = performance.now();
-    const result = subdivide(mesh, options);
-    const ms = performance.now() - start;
-    return levelData(result, ms);
+    const level = subdivideForView(mesh, options, parent);
+    return { ...level, ms: performance.now() - start };
   },
   async predict({ mesh, options }) {
     await init();

@@ -8,7 +8,7 @@
  * the worker (a WASM call cannot be interrupted) and goes on with the other
  * sessions' requests.
  */
-import type { Mesh, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
+import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import { SubdivError } from './subdiv-error';
 import workerUrl from './subdiv-worker.ts?worker&url';
@@ -248,9 +248,12 @@ export class CoreSession {
     return this.client.request(this, 'prepare', { mesh });
   }
 
-  /** Subdivides in the worker; `ms` of the result is the core's time for the step. */
-  subdivide(mesh: Mesh, options: SubdivideOptions): Promise<LevelData> {
-    return this.client.request(this, 'subdivide', { mesh, options });
+  /**
+   * Subdivides in the worker; the result comes with its facts (carried from
+   * `parent`, the facts of `mesh`) and render buffers. Its `ms` is the core's time.
+   */
+  subdivide(mesh: Mesh, options: SubdivideOptions, parent: MeshFacts): Promise<LevelData> {
+    return this.client.request(this, 'subdivide', { mesh, options, parent });
   }
 
   /** Predicted counts and peak bytes of `subdivide(mesh, options)`. */

@@ -3,16 +3,13 @@
  * (subdiv-worker.ts). Meshes cross as flat typed arrays; results are
  * transferred, not copied.
  */
-import type { Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
+import type { LevelView, Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { SubdivErrorCode } from './subdiv-error';
 
 /** One level as the viewer keeps it: the mesh, its facts and what the GPU draws. */
-export interface LevelData {
-  mesh: Mesh;
-  facts: MeshFacts;
-  buffers: RenderBuffers;
-  /** Milliseconds the core spent on the step (0 for a loaded mesh). */
+export interface LevelData extends LevelView {
+  /** Milliseconds the core spent on the step, its facts and render buffers included (0 for a loaded mesh). */
   ms: number;
 }
 
@@ -24,8 +21,8 @@ export interface WorkerRequests {
   parse: { args: { text: string; format: MeshFormat }; result: LevelData };
   /** Facts and render buffers of a mesh the page already has. */
   prepare: { args: { mesh: Mesh }; result: LevelData };
-  /** One or more steps of a scheme. */
-  subdivide: { args: { mesh: Mesh; options: SubdivideOptions }; result: LevelData };
+  /** One or more steps of a scheme from a mesh whose facts are `parent`. */
+  subdivide: { args: { mesh: Mesh; options: SubdivideOptions; parent: MeshFacts }; result: LevelData };
   /** Predicted counts and peak bytes of a step, without subdividing. */
   predict: { args: { mesh: Mesh; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a mesh, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */

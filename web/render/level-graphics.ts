@@ -8,7 +8,7 @@ import { BufferAttribute, BufferGeometry, type Sphere } from 'three';
 import type { RenderBuffers } from '../core/mesh';
 
 export class LevelGraphics {
-  /** Fanned polygons with smooth vertex normals (flat shading is a material switch). */
+  /** Fanned polygons with the core's smooth vertex normals (flat shading is a material switch). */
   readonly surface: BufferGeometry;
   /** Polygon edges as line segments. */
   readonly edges: BufferGeometry;
@@ -20,7 +20,7 @@ export class LevelGraphics {
     this.surface = new BufferGeometry();
     this.surface.setAttribute('position', position);
     this.surface.setIndex(new BufferAttribute(buffers.triangles, 1));
-    this.surface.computeVertexNormals();
+    this.surface.setAttribute('normal', new BufferAttribute(buffers.normals, 3));
     this.surface.computeBoundingSphere();
 
     this.edges = new BufferGeometry();

@@ -191,8 +191,9 @@ export class SubdivViewer {
       levels: 1,
       startLevel: from,
       triangulate: this.triangulate,
+      renderBuffers: true,
     };
-    const source = this.levels[from].data.mesh;
+    const { mesh: source, facts } = this.levels[from].data;
     this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
     try {
       const prediction = await this.core.predictSize(source, options);
@@ -204,7 +205,7 @@ export class SubdivViewer {
         if (generation !== this.generation) return false;
         this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
       }
-      const data = await this.core.subdivide(source, options);
+      const data = await this.core.subdivide(source, options, facts);
       if (generation !== this.generation) return false;
       this.levels.push({ data, graphics: null });
       this.current = this.levels.length - 1;

@@ -10,6 +10,43 @@
 #include "mesh_build.h"
 
 namespace subdivlab {
+namespace {
+
+/// Euler characteristic, genus and closedness from the counts, components
+/// and boundary loops.
+void derive_topology(Mesh_facts& facts) {
+  facts.euler_characteristic = static_cast<long>(facts.vertices) -
+                               static_cast<long>(facts.edges) +
+                               static_cast<long>(facts.faces);
+  facts.genus =
+      (2 * static_cast<long>(facts.components) - facts.euler_characteristic -
+       static_cast<long>(facts.boundaries)) /
+      2;
+  facts.closed = facts.boundaries == 0;
+}
+
+void count_degree(std::size_t degree, Mesh_facts& facts) {
+  switch (degree) {
+    case 3:
+      ++facts.triangles;
+      break;
+    case 4:
+      ++facts.quads;
+      break;
+    default:
+      ++facts.other_faces;
+      break;
+  }
+}
+
+void extend_box(const double (&c)[3], bool first, Mesh_facts& facts) {
+  for (int a = 0; a < 3; ++a) {
+    if (first || c[a] < facts.bbox_min[a]) facts.bbox_min[a] = c[a];
+    if (first || c[a] > facts.bbox_max[a]) facts.bbox_max[a] = c[a];
+  }
+}
+
+}  // namespace
 
 Mesh_facts compute_facts(const Mesh& mesh) {
   Mesh_facts facts;
@@ -30,38 +67,13 @@ Mesh_facts compute_facts(const Mesh& mesh) {
     for (Mesh::Halfedge_index g = h; !seen[g.idx()]; g = mesh.next(g))
       seen[g.idx()] = true;
   }
+  derive_topology(facts);
 
-  facts.euler_characteristic = static_cast<long>(facts.vertices) -
-                               static_cast<long>(facts.edges) +
-                               static_cast<long>(facts.faces);
-  facts.genus =
-      (2 * static_cast<long>(facts.components) - facts.euler_characteristic -
-       static_cast<long>(facts.boundaries)) /
-      2;
-  facts.closed = facts.boundaries == 0;
-
-  for (Mesh::Face_index f : mesh.faces()) {
-    switch (mesh.degree(f)) {
-      case 3:
-        ++facts.triangles;
-        break;
-      case 4:
-        ++facts.quads;
-        break;
-      default:
-        ++facts.other_faces;
-        break;
-    }
-  }
-
+  for (Mesh::Face_index f : mesh.faces()) count_degree(mesh.degree(f), facts);
   bool first = true;
   for (Mesh::Vertex_index v : mesh.vertices()) {
     const Point& p = mesh.point(v);
-    const double c[3] = {p.x(), p.y(), p.z()};
-    for (int a = 0; a < 3; ++a) {
-      if (first || c[a] < facts.bbox_min[a]) facts.bbox_min[a] = c[a];
-      if (first || c[a] > facts.bbox_max[a]) facts.bbox_max[a] = c[a];
-    }
+    extend_box({p.x(), p.y(), p.z()}, first, facts);
     first = false;
   }
   return facts;
@@ -75,6 +87,25 @@ Result<Mesh_facts> compute_facts(const Mesh_buffers& buffers) {
   r.value = compute_facts(mesh);
   r.value.control_edges = buffers.control_edges.size() / 2;
   return r;
+}
+
+bool refined_facts(const Mesh_buffers& child, std::size_t edges,
+                   const Mesh_facts& parent, Mesh_facts& out) {
+  Mesh_facts facts;
+  facts.vertices = child.vertex_count();
+  facts.edges = edges;
+  facts.faces = child.face_count();
+  facts.components = parent.components;
+  facts.boundaries = parent.boundaries;
+  derive_topology(facts);
+  if (facts.euler_characteristic != parent.euler_characteristic) return false;
+  for (std::uint32_t degree : child.face_sizes) count_degree(degree, facts);
+  const double* p = child.positions.data();
+  for (std::size_t v = 0; v < facts.vertices; ++v, p += 3)
+    extend_box({p[0], p[1], p[2]}, v == 0, facts);
+  facts.control_edges = child.control_edges.size() / 2;
+  out = facts;
+  return true;
 }
 
 }  // namespace subdivlab

@@ -26,4 +26,13 @@ Mesh_facts compute_facts(const Mesh& mesh);
 /// Facts of buffers: builds the mesh first; fails as build_mesh does.
 Result<Mesh_facts> compute_facts(const Mesh_buffers& mesh);
 
+/// Facts of `child`, refined from a mesh whose facts are `parent`, counted
+/// from its buffers (no Surface_mesh): `edges` is its number of edges (the
+/// render arrays count them). Every host refines a mesh into a homeomorphic
+/// one, so components and boundary loops are carried from the parent and
+/// the Euler characteristic stays; returns false, leaving `out` unset, when
+/// the counts say otherwise (the caller then asks compute_facts).
+bool refined_facts(const Mesh_buffers& child, std::size_t edges,
+                   const Mesh_facts& parent, Mesh_facts& out);
+
 }  // namespace subdivlab

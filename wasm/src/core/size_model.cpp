@@ -10,6 +10,7 @@
 
 #include "refine/level_convert.h"
 #include "refine/primal_points.h"
+#include "render_buffers.h"
 #include "scheme_table.h"
 
 namespace subdivlab::detail {
@@ -396,19 +397,27 @@ Step_need step_need(const Subdivide_options& options, const Counts& c,
   Step_need need;
   need.after = next_counts(scheme, c, global_step);
   need.caps_after = caps;
+  double peak = 0;
   if (runs_on_fast_host(options)) {
-    need.peak_bytes = fast_step_peak(scheme, c, need.after, caps, first, last,
-                                     marks, input_bytes) *
-                          kSlackFactor +
-                      kSlackBytes;
-    return need;
+    peak = fast_step_peak(scheme, c, need.after, caps, first, last, marks,
+                          input_bytes);
+  } else {
+    const double base = input_bytes + control_edge_bytes(marks);
+    peak = simulate_step(scheme, c, need.after, need.caps_after, base,
+                         global_step);
+    if (last)
+      peak = std::max(peak, to_buffers_peak(need.after, need.caps_after, base));
   }
-  input_bytes += control_edge_bytes(marks);
-  double peak = simulate_step(scheme, c, need.after, need.caps_after,
-                              input_bytes, global_step);
-  if (last)
+  if (last && options.render_buffers) {
+    // The result's buffers and the input beside the render arrays.
+    const Counts& n = need.after;
+    const double corners = n.degree_sum();
     peak = std::max(peak,
-                    to_buffers_peak(need.after, need.caps_after, input_bytes));
+                    input_bytes + buffers_bytes(n.vertices, n.faces, corners) +
+                        16 * marks +  // the result's control edges, 2 per mark
+                        render_peak_bytes(n.vertices, n.edges, corners,
+                                          corners - 2 * n.faces));
+  }
   need.peak_bytes = peak * kSlackFactor + kSlackBytes;
   return need;
 }

@@ -34,6 +34,10 @@ struct Subdivide_options {
   /// reference the fast hosts are compared with, in the tests and in the
   /// benchmark's CGAL column. Same results (to 1e-12), more time and memory.
   bool cgal_hosts = false;
+  /// The caller builds the result's render arrays while the result and the
+  /// input are alive (level_view.h): the last step's memory check and
+  /// prediction include them.
+  bool render_buffers = false;
 };
 
 /// Counts predicted for a mesh after `levels` steps of a scheme, and the

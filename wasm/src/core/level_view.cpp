@@ -1,0 +1,33 @@
+// Facts and render arrays beside the mesh they describe.
+
+#include "level_view.h"
+
+#include <utility>
+
+namespace subdivlab {
+
+Result<Mesh_facts> view_mesh(const Mesh_buffers& mesh, Render_sink& sink) {
+  Result<Mesh_facts> facts = compute_facts(mesh);
+  if (facts.ok()) build_render_buffers(mesh, sink);
+  return facts;
+}
+
+Result<Mesh_facts> view_step(const Mesh_buffers& in,
+                             const Subdivide_options& options,
+                             const Mesh_facts& parent, Mesh_buffers& out,
+                             Render_sink& sink) {
+  Result<Mesh_facts> r;
+  Subdivide_options viewed = options;
+  viewed.render_buffers = true;
+  Result<Mesh_buffers> step = subdivide_mesh(in, viewed);
+  if (!step.ok()) {
+    r.status = step.status;
+    return r;
+  }
+  out = std::move(step.value);
+  const std::size_t edges = build_render_buffers(out, sink);
+  if (!refined_facts(out, edges, parent, r.value)) r = compute_facts(out);
+  return r;
+}
+
+}  // namespace subdivlab

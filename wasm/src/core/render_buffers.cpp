@@ -1,0 +1,198 @@
+// The render arrays of a mesh: fan triangles, area-weighted vertex normals
+// and the polygon edges, from the flat buffers alone.
+
+#include "render_buffers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace subdivlab {
+namespace {
+
+/// Marks a corner whose edge an earlier corner gave.
+constexpr std::uint32_t kNoEdge = 0xffffffffu;
+
+std::size_t fan_triangle_count(const Mesh_buffers& mesh) {
+  std::size_t count = 0;
+  for (std::uint32_t size : mesh.face_sizes) count += size - 2;
+  return count;
+}
+
+void fan_triangles(const Mesh_buffers& mesh, std::vector<std::uint32_t>& out) {
+  out.resize(3 * fan_triangle_count(mesh));
+  std::uint32_t* t = out.data();
+  const std::uint32_t* corner = mesh.face_indices.data();
+  for (std::uint32_t size : mesh.face_sizes) {
+    for (std::uint32_t k = 1; k + 1 < size; ++k) {
+      *t++ = corner[0];
+      *t++ = corner[k];
+      *t++ = corner[k + 1];
+    }
+    corner += size;
+  }
+}
+
+void triangle_faces(const Mesh_buffers& mesh, std::vector<std::uint32_t>& out) {
+  out.resize(fan_triangle_count(mesh));
+  std::uint32_t* t = out.data();
+  const std::uint32_t faces = static_cast<std::uint32_t>(mesh.face_count());
+  for (std::uint32_t f = 0; f < faces; ++f)
+    for (std::uint32_t k = 2; k < mesh.face_sizes[f]; ++k) *t++ = f;
+}
+
+/// Summed in double (a float sum drifts on a vertex of high valence), then
+/// normalized as three.js's Vector3.normalize does: a zero sum stays zero.
+void vertex_normals(const Mesh_buffers& mesh, std::vector<float>& out) {
+  const std::size_t n = mesh.vertex_count();
+  std::vector<double> sum(3 * n, 0.0);
+  const double* p = mesh.positions.data();
+  const std::uint32_t* corner = mesh.face_indices.data();
+  for (std::uint32_t size : mesh.face_sizes) {
+    const std::uint32_t a = corner[0];
+    for (std::uint32_t k = 1; k + 1 < size; ++k) {
+      const std::uint32_t b = corner[k], c = corner[k + 1];
+      // (c - b) x (a - b): the triangle's normal, twice its area long.
+      const double cb[3] = {p[3 * c] - p[3 * b], p[3 * c + 1] - p[3 * b + 1],
+                            p[3 * c + 2] - p[3 * b + 2]};
+      const double ab[3] = {p[3 * a] - p[3 * b], p[3 * a + 1] - p[3 * b + 1],
+                            p[3 * a + 2] - p[3 * b + 2]};
+      const double nx = cb[1] * ab[2] - cb[2] * ab[1];
+      const double ny = cb[2] * ab[0] - cb[0] * ab[2];
+      const double nz = cb[0] * ab[1] - cb[1] * ab[0];
+      for (std::uint32_t v : {a, b, c}) {
+        sum[3 * v] += nx;
+        sum[3 * v + 1] += ny;
+        sum[3 * v + 2] += nz;
+      }
+    }
+    corner += size;
+  }
+  out.resize(3 * n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const double x = sum[3 * v], y = sum[3 * v + 1], z = sum[3 * v + 2];
+    const double length = std::sqrt(x * x + y * y + z * z);
+    const double scale = length > 0 ? 1 / length : 0;
+    out[3 * v] = static_cast<float>(x * scale);
+    out[3 * v + 1] = static_cast<float>(y * scale);
+    out[3 * v + 2] = static_cast<float>(z * scale);
+  }
+}
+
+/// Every polygon edge once, bucketed by its smaller vertex: the larger
+/// end of each corner's edge goes to the bucket of the smaller (a counting
+/// sort, corner order kept in each bucket); a stamp per vertex says whether
+/// it was seen in the bucket at hand, so that a vertex of any valence costs
+/// one pass. Returns the number of edges.
+std::size_t polygon_edges(const Mesh_buffers& mesh,
+                          std::vector<std::uint32_t>& out) {
+  const std::size_t n = mesh.vertex_count();
+  const std::uint32_t* fv = mesh.face_indices.data();
+  // Calls visit(lo, hi) for the edge from each corner to the next.
+  const auto each_corner_edge = [&mesh, fv](auto&& visit) {
+    std::size_t at = 0;
+    for (std::uint32_t size : mesh.face_sizes) {
+      for (std::uint32_t k = 0; k < size; ++k) {
+        const std::uint32_t a = fv[at + k];
+        const std::uint32_t b = fv[at + (k + 1 == size ? 0 : k + 1)];
+        visit(std::min(a, b), std::max(a, b));
+      }
+      at += size;
+    }
+  };
+  // end[lo] ends bucket lo once the corners are placed (it starts as the
+  // bucket's start and moves past each corner put in it).
+  std::vector<std::uint32_t> end(n + 1, 0);
+  each_corner_edge([&end](std::uint32_t lo, std::uint32_t) { ++end[lo + 1]; });
+  for (std::size_t v = 0; v < n; ++v) end[v + 1] += end[v];
+  std::vector<std::uint32_t> larger(mesh.face_indices.size());
+  each_corner_edge([&end, &larger](std::uint32_t lo, std::uint32_t hi) {
+    larger[end[lo]++] = hi;
+  });
+  std::vector<std::uint32_t> stamp(n, 0);
+  std::size_t edges = 0;
+  for (std::size_t lo = 0, i = 0; lo < n; ++lo) {
+    const std::uint32_t mark = static_cast<std::uint32_t>(lo) + 1;
+    for (; i < end[lo]; ++i) {
+      const std::uint32_t hi = larger[i];
+      if (stamp[hi] == mark) {
+        larger[i] = kNoEdge;
+        continue;
+      }
+      stamp[hi] = mark;
+      ++edges;
+    }
+  }
+  std::vector<std::uint32_t>().swap(stamp);
+  out.resize(2 * edges);
+  std::uint32_t* e = out.data();
+  for (std::size_t lo = 0, i = 0; lo < n; ++lo) {
+    for (; i < end[lo]; ++i) {
+      if (larger[i] == kNoEdge) continue;
+      *e++ = static_cast<std::uint32_t>(lo);
+      *e++ = larger[i];
+    }
+  }
+  return edges;
+}
+
+}  // namespace
+
+std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink) {
+  {
+    std::vector<float> positions(mesh.positions.begin(), mesh.positions.end());
+    sink.floats(Render_array::positions, positions);
+  }
+  {
+    std::vector<float> normals;
+    vertex_normals(mesh, normals);
+    sink.floats(Render_array::normals, normals);
+  }
+  {
+    std::vector<std::uint32_t> triangles;
+    fan_triangles(mesh, triangles);
+    sink.indices(Render_array::triangles, triangles);
+  }
+  {
+    std::vector<std::uint32_t> faces;
+    triangle_faces(mesh, faces);
+    sink.indices(Render_array::triangle_face, faces);
+  }
+  std::vector<std::uint32_t> edges;
+  const std::size_t count = polygon_edges(mesh, edges);
+  sink.indices(Render_array::edges, edges);
+  return count;
+}
+
+double render_peak_bytes(double vertices, double edges, double corners,
+                         double triangles) {
+  const double normals = 36 * vertices;  // double sums and float results
+  const double fan = 12 * triangles;
+  const double edge_list = 4 * corners + 8 * vertices + 8 * edges;
+  return std::max({normals, fan, edge_list});
+}
+
+Render_buffers render_buffers(const Mesh_buffers& mesh) {
+  struct Collect : Render_sink {
+    Render_buffers out;
+    void floats(Render_array which, const std::vector<float>& v) override {
+      (which == Render_array::positions ? out.positions : out.normals) = v;
+    }
+    void indices(Render_array which,
+                 const std::vector<std::uint32_t>& v) override {
+      if (which == Render_array::triangles)
+        out.triangles = v;
+      else if (which == Render_array::triangle_face)
+        out.triangle_face = v;
+      else
+        out.edges = v;
+    }
+  } collect;
+  build_render_buffers(mesh, collect);
+  return std::move(collect.out);
+}
+
+}  // namespace subdivlab

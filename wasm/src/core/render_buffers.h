@@ -1,0 +1,55 @@
+// What the GPU draws for a mesh, built by the core beside the step that
+// made the mesh, so that the page gets arrays it uploads as they are (no
+// JavaScript pass over a million faces, no normals on the main thread).
+// Owner: render_buffers.cpp.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mesh_types.h"
+
+namespace subdivlab {
+
+/// The arrays of a level's picture:
+///   positions      x y z per vertex, as float
+///   normals        per vertex: the sum of the normals of its fan triangles,
+///                  each weighted by the triangle's area, normalized (zero
+///                  where that sum is zero), as three.js's
+///                  computeVertexNormals makes them
+///   triangles      each polygon fanned from its first corner: 0 k k+1
+///   triangle_face  the polygon each triangle came from
+///   edges          every polygon edge once (quads stay quads: no fan
+///                  diagonals), as its smaller then larger vertex, ordered
+///                  by the smaller one, then by first appearance
+enum class Render_array { positions, normals, triangles, triangle_face, edges };
+
+/// Receives the arrays one at a time; each is freed when the call returns,
+/// so that only one of them is in memory beside the mesh.
+class Render_sink {
+ public:
+  virtual ~Render_sink() = default;
+  virtual void floats(Render_array which, const std::vector<float>& values) = 0;
+  virtual void indices(Render_array which,
+                       const std::vector<std::uint32_t>& values) = 0;
+};
+
+/// Builds the arrays of `mesh` (a valid mesh: every edge in at most two
+/// faces) in the order of Render_array and hands each to `sink`. Returns
+/// the number of edges.
+std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink);
+
+/// Bytes the arrays and their scratch take at most at once, beside the
+/// mesh, for V vertices, E edges, C corners and T fan triangles.
+double render_peak_bytes(double vertices, double edges, double corners,
+                         double triangles);
+
+/// All the arrays at once (tests, and callers without a sink).
+struct Render_buffers {
+  std::vector<float> positions, normals;
+  std::vector<std::uint32_t> triangles, triangle_face, edges;
+};
+Render_buffers render_buffers(const Mesh_buffers& mesh);
+
+}  // namespace subdivlab
