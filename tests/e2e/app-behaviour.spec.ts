@@ -136,6 +136,37 @@ test('a long step shows progress, keeps the page responsive and can be cancelled
   });
 });
 
+test('after a cancelled step the worker restarts without the levels it kept: they are restored on use', async ({
+  app,
+}) => {
+  test.setTimeout(120_000);
+  await app.open();
+  // 40 000 quads: level 1 has 160 000, level 2 (cancelled) would have 640 000.
+  await app.load('grid-200.off', quadGridOff(200));
+  await app.subdivide();
+  const level1 = await app.positions();
+  expect(level1.length).toBe(3 * 401 * 401);
+  await app.byTestId('controls.subdivide').click();
+  await expect(app.byTestId('progress')).toBeVisible();
+  await app.byTestId('progress.cancel').click();
+  await expect(app.byTestId('progress')).toBeHidden();
+  expect(await app.state()).toMatchObject({ busy: false, level: 1, levelCount: 2 });
+  await test.step('the shown level reads back as it was (recomputed from level 0 in the new worker)', async () => {
+    const again = await app.positions();
+    expect(again.length).toBe(level1.length);
+    expect(again.every((x, i) => x === level1[i])).toBe(true);
+  });
+  await test.step('it exports', async () => {
+    await app.byTestId('export-panel').locator('summary').click();
+    const off = readFileSync(await (await app.download('export.off')).path(), 'utf8');
+    expect(off.split('\n', 2)[1]).toBe(`${401 * 401} 160000 0`);
+  });
+  await test.step('and the next step starts from it', async () => {
+    await app.subdivide();
+    expect((await app.facts()).faces).toBe(640_000);
+  });
+});
+
 test('trackball camera, fit, save view and restore view', async ({ app }) => {
   await app.open();
   await app.load('cube.off', CUBE);

@@ -8,6 +8,7 @@ import { initNode } from '../../web/core/init-node';
 import type { Mesh, SchemeName } from '../../web/core/mesh';
 import { meshFacts, predictSize, subdivide, subdivideForView, viewMesh } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
+import { fanPolygons } from '../../web/render/fan-polygons';
 import { loadFixture } from './test-helpers';
 
 beforeAll(async () => {
@@ -78,6 +79,25 @@ describe('render buffers from the core', () => {
       }
     },
   );
+});
+
+describe('fanPolygons', () => {
+  it.each(['mixed-open.off', 'rhombicuboctahedron.off', 'cube.off'])(
+    'gives back the polygons of %s from its fan triangles, corner for corner',
+    (fixture) => {
+      const mesh = loadFixture(fixture);
+      const polygons = fanPolygons(viewMesh(mesh).buffers);
+      expect(polygons.faceSizes).toEqual(mesh.faceSizes);
+      expect(polygons.faceIndices).toEqual(mesh.faceIndices);
+    },
+  );
+
+  it('gives nothing for no triangles', () => {
+    const empty = { positions: new Float32Array(0), normals: new Float32Array(0), triangles: new Uint32Array(0) };
+    const polygons = fanPolygons({ ...empty, edges: new Uint32Array(0), triangleFace: new Uint32Array(0) });
+    expect(polygons.faceSizes.length).toBe(0);
+    expect(polygons.faceIndices.length).toBe(0);
+  });
 });
 
 describe('subdivideForView', () => {

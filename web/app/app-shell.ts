@@ -270,7 +270,7 @@ export class AppShell {
         const result = this.shareActions.link();
         return 'link' in result ? result.link : null;
       },
-      positions: () => Array.from(this.viewer.mesh?.positions ?? []),
+      positions: async () => Array.from((await this.viewer.meshOf())?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
     };
   }

@@ -55,7 +55,7 @@ export interface SubdivLabTestApi {
   /** Lowers the budget over which a step asks first (to test the question with small meshes). */
   setMemoryBudget(bytes: number): void;
   /** Vertex positions of the shown level, x0 y0 z0 x1 ... (empty before a load). */
-  positions(): number[];
+  positions(): Promise<number[]>;
   /** The link Share would copy; null when there is none (a local file, no model). */
   shareLink(): string | null;
 }

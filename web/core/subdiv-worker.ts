@@ -1,8 +1,10 @@
 /**
  * The Web Worker that runs the WASM core off the main thread, so the page
- * stays responsive during a long step. It imports the core's TS API only
+ * stays responsive during a long step. It keeps the mesh of every level the
+ * page shows (the page holds handles), imports the core's TS API only
  * (never ./generated/), answers one request at a time and transfers results.
  */
+import type { Mesh, MeshFacts, RenderBuffers } from './mesh';
 import {
   checkRules,
   exportMeshChunks,
@@ -16,6 +18,7 @@ import {
 import { SubdivError } from './subdiv-error';
 import type {
   LevelData,
+  LevelHandle,
   WorkerRequestKind,
   WorkerRequestMessage,
   WorkerRequests,
@@ -29,66 +32,115 @@ interface WorkerScope {
 }
 const scope = self as unknown as WorkerScope;
 
+/** The levels kept for the page, by handle id; `epoch` is this worker's, from init. */
+const kept = new Map<number, { mesh: Mesh; facts: MeshFacts }>();
+let epoch = -1;
+let nextId = 1;
+
+function keep(mesh: Mesh, facts: MeshFacts): LevelHandle {
+  const id = nextId++;
+  kept.set(id, { mesh, facts });
+  return { epoch, id };
+}
+
+function keptLevel(handle: LevelHandle): { mesh: Mesh; facts: MeshFacts } {
+  const level = handle.epoch === epoch ? kept.get(handle.id) : undefined;
+  if (!level) throw new SubdivError('internal_error', `Level ${handle.epoch}/${handle.id} is not kept by the core.`);
+  return level;
+}
+
+/** Keeps the mesh; the page gets the rest, its control edges as a copy (the kept mesh keeps its own). */
+function levelData(mesh: Mesh, facts: MeshFacts, buffers: RenderBuffers, ms: number): LevelData {
+  return { handle: keep(mesh, facts), facts, buffers, controlEdges: mesh.controlEdges.slice(), ms };
+}
+
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
 function buffersOf(level: LevelData): Transferable[] {
-  const arrays = [
-    level.mesh.positions,
-    level.mesh.faceSizes,
-    level.mesh.faceIndices,
-    level.mesh.controlEdges,
-    level.buffers.positions,
-    level.buffers.normals,
-    level.buffers.triangles,
-    level.buffers.edges,
-    level.buffers.triangleFace,
-  ];
+  const { positions, normals, triangles, edges, triangleFace } = level.buffers;
+  const arrays = [positions, normals, triangles, edges, triangleFace, level.controlEdges];
   return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
 }
 
+function meshBuffers(mesh: Mesh): Transferable[] {
+  const arrays = [mesh.positions, mesh.faceSizes, mesh.faceIndices, mesh.controlEdges];
+  return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
+}
+
+function copyOf(mesh: Mesh): Mesh {
+  return {
+    positions: mesh.positions.slice(),
+    faceSizes: mesh.faceSizes.slice(),
+    faceIndices: mesh.faceIndices.slice(),
+    controlEdges: mesh.controlEdges.slice(),
+  };
+}
+
 type Handlers = {
-  [K in WorkerRequestKind]: (args: WorkerRequests[K]['args']) => Promise<WorkerRequests[K]['result']>;
+  [K in WorkerRequestKind]: (
+    args: WorkerRequests[K]['args'],
+  ) => Promise<{ value: WorkerRequests[K]['result']; transfer: Transferable[] }>;
 };
 
 const handlers: Handlers = {
-  async init({ module }) {
+  async init({ module, epoch: given }) {
     await init(module ? { wasmModule: module } : {});
-    return schemeNames();
+    epoch = given;
+    return { value: schemeNames(), transfer: [] };
   },
   async parse({ text, format }) {
     await init();
-    return { ...viewMesh(parseMesh(text, format)), ms: 0 };
+    const { mesh, facts, buffers } = viewMesh(parseMesh(text, format));
+    const level = levelData(mesh, facts, buffers, 0);
+    const copy = copyOf(mesh);
+    return { value: { level, mesh: copy }, transfer: [...buffersOf(level), ...meshBuffers(copy)] };
   },
   async prepare({ mesh }) {
     await init();
-    return { ...viewMesh(mesh), ms: 0 };
+    const { facts, buffers } = viewMesh(mesh);
+    const level = levelData(mesh, facts, buffers, 0);
+    return { value: level, transfer: buffersOf(level) };
   },
-  async subdivide({ mesh, options, parent }) {
+  async keep({ mesh, facts }) {
+    return { value: keep(mesh, facts), transfer: [] };
+  },
+  async subdivide({ handle, options }) {
     await init();
+    const parent = keptLevel(handle);
     const start = performance.now();
-    const level = subdivideForView(mesh, options, parent);
-    return { ...level, ms: performance.now() - start };
+    const { mesh, facts, buffers } = subdivideForView(parent.mesh, options, parent.facts);
+    const level = levelData(mesh, facts, buffers, performance.now() - start);
+    return { value: level, transfer: buffersOf(level) };
   },
-  async predict({ mesh, options }) {
+  async predict({ handle, options }) {
     await init();
-    return predictSize(mesh, options);
+    return { value: predictSize(keptLevel(handle).mesh, options), transfer: [] };
   },
-  async export({ mesh, format }) {
+  async export({ handle, format }) {
     await init();
-    return exportMeshChunks(mesh, format);
+    // Each piece owns its buffer (copied out of the heap), so all can be transferred.
+    const chunks = exportMeshChunks(keptLevel(handle).mesh, format);
+    return { value: chunks, transfer: chunks.map((c) => c.buffer) };
+  },
+  async mesh({ handle }) {
+    const copy = copyOf(keptLevel(handle).mesh);
+    return { value: copy, transfer: meshBuffers(copy) };
+  },
+  async release({ handles }) {
+    for (const h of handles) if (h.epoch === epoch) kept.delete(h.id);
+    return { value: null, transfer: [] };
   },
   async checkRules({ rules }) {
     await init();
     checkRules(rules);
-    return null;
+    return { value: null, transfer: [] };
   },
 };
 
 scope.onmessage = async (event) => {
   const { id, kind, args } = event.data;
   try {
-    const handler = handlers[kind] as (a: typeof args) => Promise<unknown>;
-    const value = await handler(args);
-    const transfer = isLevelData(value) ? buffersOf(value) : isChunkList(value) ? value.map((c) => c.buffer) : [];
+    const handler = handlers[kind] as (a: typeof args) => Promise<{ value: unknown; transfer: Transferable[] }>;
+    const { value, transfer } = await handler(args);
     scope.postMessage({ id, ok: true, value }, { transfer });
   } catch (error) {
     const data =
@@ -98,12 +150,3 @@ scope.onmessage = async (event) => {
     scope.postMessage({ id, ok: false, error: data });
   }
 };
-
-/** An export's pieces: each owns its buffer (copied out of the heap), so all can be transferred. */
-function isChunkList(value: unknown): value is Uint8Array[] {
-  return Array.isArray(value) && value.every((chunk) => chunk instanceof Uint8Array);
-}
-
-function isLevelData(value: unknown): value is LevelData {
-  return typeof value === 'object' && value !== null && 'buffers' in value && 'mesh' in value;
-}

@@ -14,19 +14,32 @@ import { SubdivError } from './subdiv-error';
 import workerUrl from './subdiv-worker.ts?worker&url';
 import type {
   LevelData,
+  LevelHandle,
   WorkerRequestKind,
   WorkerRequestMessage,
   WorkerRequests,
   WorkerResponseMessage,
 } from './worker-protocol';
 
-export type { LevelData } from './worker-protocol';
+export type { LevelData, LevelHandle } from './worker-protocol';
 
 /** Rejection of requests that were running or queued when their session was cancelled. */
 export class CancelledError extends Error {
   constructor() {
     super('Cancelled.');
     this.name = 'CancelledError';
+  }
+}
+
+/**
+ * Rejection of a request about a level the worker no longer keeps: it
+ * restarted (a cancel or a crash) since the level was made. The caller keeps
+ * it again (level 0) or recomputes it, then asks again.
+ */
+export class StaleLevelError extends Error {
+  constructor() {
+    super('The core restarted since this level was made.');
+    this.name = 'StaleLevelError';
   }
 }
 
@@ -82,6 +95,7 @@ export class WorkerClient {
   private readonly module: Promise<WebAssembly.Module | null>;
   private schemes: Promise<string[]>;
   private disposed = false;
+  private workerEpoch = 0;
 
   /**
    * @param factory makes a worker (tests pass their own).
@@ -105,6 +119,14 @@ export class WorkerClient {
   /** Resolves with the core's scheme names once the WASM module is loaded. */
   ready(): Promise<string[]> {
     return this.schemes;
+  }
+
+  /**
+   * Counts the workers dropped (cancelled or crashed): the levels a worker
+   * kept are gone with it, so a handle of another epoch names nothing.
+   */
+  get epoch(): number {
+    return this.workerEpoch;
   }
 
   /** Terminates the worker; every pending request rejects with CancelledError. */
@@ -133,6 +155,12 @@ export class WorkerClient {
     });
   }
 
+  /** @internal Queues a release of kept levels as the client's own request. */
+  release(handles: LevelHandle[]): void {
+    if (handles.length === 0 || this.disposed) return;
+    this.request(this.internal, 'release', { handles }).catch(() => undefined);
+  }
+
   /** @internal Drops `session`'s requests; restarts the worker only if one of them is running. */
   cancel(session: CoreSession): void {
     const dropped = this.queue.filter((r) => r.session === session);
@@ -141,6 +169,7 @@ export class WorkerClient {
     if (running?.session === session) {
       this.worker?.terminate();
       this.worker = null;
+      this.workerEpoch++;
       this.running = null;
       dropped.unshift(running);
       // The new worker loads the core again before the next request.
@@ -151,7 +180,8 @@ export class WorkerClient {
   }
 
   private startInit(): Promise<string[]> {
-    const schemes = this.request(this.internal, 'init', {});
+    // The epoch is filled in when the request is sent.
+    const schemes = this.request(this.internal, 'init', { epoch: -1 });
     // Cancelling may reject it before anyone awaits it: that is not an error.
     schemes.catch(() => undefined);
     return schemes;
@@ -174,12 +204,19 @@ export class WorkerClient {
     let args = request.args;
     if (request.kind === 'init') {
       try {
-        args = { module: await this.module };
+        args = { module: await this.module, epoch: this.workerEpoch };
       } catch (error) {
         this.settle(request, { id: request.id, ok: false, error: errorData(error) });
         return;
       }
       if (this.running !== request) return;
+    }
+    const handle = (args as { handle?: LevelHandle }).handle;
+    if (handle && handle.epoch !== this.workerEpoch) {
+      this.running = null;
+      request.reject(new StaleLevelError());
+      this.pump();
+      return;
     }
     const message: WorkerRequestMessage = { id: request.id, kind: request.kind, args: args as never };
     try {
@@ -203,6 +240,7 @@ export class WorkerClient {
       worker.terminate();
       if (this.worker !== worker) return;
       this.worker = null;
+      this.workerEpoch++;
       const running = this.running;
       // The next worker loads the core first (from the page's compiled module), as after a cancel.
       if (running?.kind !== 'init') this.schemes = this.startInit();
@@ -238,32 +276,52 @@ export class CoreSession {
     return this.client.ready();
   }
 
-  /** Parses OFF/OBJ text; the result is level 0 with its facts and render buffers. */
-  parse(text: string, format: MeshFormat): Promise<LevelData> {
+  /** Parses OFF/OBJ text into a level 0 kept by the worker; answers it and its mesh. */
+  parse(text: string, format: MeshFormat): Promise<{ level: LevelData; mesh: Mesh }> {
     return this.client.request(this, 'parse', { text, format });
   }
 
-  /** Facts and render buffers of a mesh built elsewhere. */
+  /** Keeps a mesh built elsewhere as a level 0: its handle, facts and render buffers. */
   prepare(mesh: Mesh): Promise<LevelData> {
     return this.client.request(this, 'prepare', { mesh });
   }
 
+  /** Keeps `mesh`, whose facts are `facts`, again (after a restart); answers its handle. */
+  keep(mesh: Mesh, facts: MeshFacts): Promise<LevelHandle> {
+    return this.client.request(this, 'keep', { mesh, facts });
+  }
+
   /**
-   * Subdivides in the worker; the result comes with its facts (carried from
-   * `parent`, the facts of `mesh`) and render buffers. Its `ms` is the core's time.
+   * Subdivides a kept level in the worker, which keeps the result; it comes
+   * with its facts and render buffers. Its `ms` is the core's time.
+   * Rejects with StaleLevelError when the worker restarted since `handle`.
    */
-  subdivide(mesh: Mesh, options: SubdivideOptions, parent: MeshFacts): Promise<LevelData> {
-    return this.client.request(this, 'subdivide', { mesh, options, parent });
+  subdivide(handle: LevelHandle, options: SubdivideOptions): Promise<LevelData> {
+    return this.client.request(this, 'subdivide', { handle, options });
   }
 
-  /** Predicted counts and peak bytes of `subdivide(mesh, options)`. */
-  predictSize(mesh: Mesh, options: SubdivideOptions): Promise<SizePrediction> {
-    return this.client.request(this, 'predict', { mesh, options });
+  /** Predicted counts and peak bytes of `subdivide(handle, options)`. */
+  predictSize(handle: LevelHandle, options: SubdivideOptions): Promise<SizePrediction> {
+    return this.client.request(this, 'predict', { handle, options });
   }
 
-  /** OFF or OBJ text of `mesh`, in pieces (see writeMesh) to join into a Blob or a file. */
-  exportMesh(mesh: Mesh, format: MeshFormat): Promise<Uint8Array[]> {
-    return this.client.request(this, 'export', { mesh, format });
+  /** OFF or OBJ text of a kept level, in pieces (see writeMesh) to join into a Blob or a file. */
+  exportMesh(handle: LevelHandle, format: MeshFormat): Promise<Uint8Array[]> {
+    return this.client.request(this, 'export', { handle, format });
+  }
+
+  /** A copy of a kept level's mesh. */
+  mesh(handle: LevelHandle): Promise<Mesh> {
+    return this.client.request(this, 'mesh', { handle });
+  }
+
+  /**
+   * Lets the worker forget kept levels. Not this session's request: a
+   * cancel of the session does not drop it (handles of an earlier worker
+   * are ignored).
+   */
+  release(handles: LevelHandle[]): void {
+    this.client.release(handles);
   }
 
   /** Resolves when the core accepts `rules`; rejects with its SubdivError (invalid_argument) otherwise. */

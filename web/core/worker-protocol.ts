@@ -1,14 +1,31 @@
 /**
  * Messages between the page (worker-client.ts) and the core's Web Worker
- * (subdiv-worker.ts). Meshes cross as flat typed arrays; results are
- * transferred, not copied.
+ * (subdiv-worker.ts). The worker keeps every level's mesh; the page holds
+ * a handle to it with what the page needs to show it (facts, render
+ * buffers, control edges), transferred, not copied. A step sends a handle
+ * and gets the new level back.
  */
-import type { LevelView, Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
+import type { Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { SubdivErrorCode } from './subdiv-error';
 
-/** One level as the viewer keeps it: the mesh, its facts and what the GPU draws. */
-export interface LevelData extends LevelView {
+/**
+ * A mesh kept by the worker. `epoch` counts the workers the client has
+ * started: a handle of an earlier one names nothing (the worker restarted
+ * after a cancel or a crash, and its levels went with it).
+ */
+export interface LevelHandle {
+  epoch: number;
+  id: number;
+}
+
+/** One level as the page keeps it: its handle in the worker, its facts and what the GPU draws. */
+export interface LevelData {
+  handle: LevelHandle;
+  facts: MeshFacts;
+  buffers: RenderBuffers;
+  /** The level's marked control edges (vertex index pairs; may be empty). */
+  controlEdges: Uint32Array;
   /** Milliseconds the core spent on the step, its facts and render buffers included (0 for a loaded mesh). */
   ms: number;
 }
@@ -16,17 +33,23 @@ export interface LevelData extends LevelView {
 /** Requests the worker understands, by kind. */
 export interface WorkerRequests {
   /** Loads the WASM core (from the page's compiled module when given); answers the scheme names. */
-  init: { args: { module?: WebAssembly.Module | null }; result: string[] };
-  /** Parses OFF/OBJ text into a level-0 LevelData. */
-  parse: { args: { text: string; format: MeshFormat }; result: LevelData };
-  /** Facts and render buffers of a mesh the page already has. */
+  init: { args: { module?: WebAssembly.Module | null; epoch: number }; result: string[] };
+  /** Parses OFF/OBJ text into a kept level 0; answers it with its mesh (the page keeps level 0 to restore it). */
+  parse: { args: { text: string; format: MeshFormat }; result: { level: LevelData; mesh: Mesh } };
+  /** Keeps a mesh the page already has as a level 0, with its facts and render buffers. */
   prepare: { args: { mesh: Mesh }; result: LevelData };
-  /** One or more steps of a scheme from a mesh whose facts are `parent`. */
-  subdivide: { args: { mesh: Mesh; options: SubdivideOptions; parent: MeshFacts }; result: LevelData };
-  /** Predicted counts and peak bytes of a step, without subdividing. */
-  predict: { args: { mesh: Mesh; options: SubdivideOptions }; result: SizePrediction };
-  /** OFF/OBJ text of a mesh, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */
-  export: { args: { mesh: Mesh; format: MeshFormat }; result: Uint8Array[] };
+  /** Keeps a mesh again whose facts the page has (after the worker restarted); answers its handle. */
+  keep: { args: { mesh: Mesh; facts: MeshFacts }; result: LevelHandle };
+  /** One or more steps of a scheme from a kept level; keeps the result. */
+  subdivide: { args: { handle: LevelHandle; options: SubdivideOptions }; result: LevelData };
+  /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
+  predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
+  /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */
+  export: { args: { handle: LevelHandle; format: MeshFormat }; result: Uint8Array[] };
+  /** A copy of a kept level's mesh. */
+  mesh: { args: { handle: LevelHandle }; result: Mesh };
+  /** Forgets kept levels (handles of an earlier worker are ignored). */
+  release: { args: { handles: LevelHandle[] }; result: null };
   /** The core's verdict on a custom rule set, without a mesh: answers null or fails with its SubdivError. */
   checkRules: { args: { rules: RuleSet }; result: null };
 }

@@ -9,7 +9,6 @@
  * SVGRenderer draws triangles, so the projection is done here.
  */
 import { Color, type PerspectiveCamera, Vector3 } from 'three';
-import type { Mesh } from '../core/mesh';
 import { LIGHT_IN_CAMERA, LIGHT_SHARES, VIEW_COLORS } from './scene-view';
 
 /** Positions (xyz) and vertex index pairs of line segments. */
@@ -23,9 +22,16 @@ export interface LineSet {
   faces?: { faceSizes: ArrayLike<number>; faceIndices: ArrayLike<number> };
 }
 
+/** Polygons: positions (xyz) and each face's vertex indices, face after face. */
+export interface PolygonSet {
+  positions: ArrayLike<number>;
+  faceSizes: Uint32Array;
+  faceIndices: Uint32Array;
+}
+
 export interface SvgExportInput {
   /** The level shown. */
-  mesh: Mesh;
+  mesh: PolygonSet;
   camera: PerspectiveCamera;
   /** Size of the view in CSS pixels (the SVG's viewBox). */
   width: number;

@@ -3,12 +3,24 @@
  * (camera, controls, its picture) inside a container element and the history
  * of levels 0..N of one model under one scheme. The core runs in a Web
  * Worker shared by every viewer of the page (a WorkerClient; each viewer has
- * its own CoreSession, so cancelling one viewer stops only its requests). Methods reject
+ * its own CoreSession, so cancelling one viewer stops only its requests).
+ * The worker keeps each level's mesh; the viewer holds its handle, facts and
+ * render buffers, and level 0's mesh, from which it recomputes a level the
+ * worker lost when it restarted (a cancel, a crash). Methods reject
  * with SubdivError / CancelledError / Error; the viewer never touches the
  * DOM outside its container, so an app shell or an embed adds the panels.
  */
 import type { Mesh, MeshFacts, MeshFormat, SchemeName, SizePrediction, SubdivideOptions } from '../core/mesh';
-import { CancelledError, type CoreSession, type LevelData, pageCore, type WorkerClient } from '../core/worker-client';
+import {
+  CancelledError,
+  type CoreSession,
+  type LevelData,
+  type LevelHandle,
+  pageCore,
+  StaleLevelError,
+  type WorkerClient,
+} from '../core/worker-client';
+import { fanPolygons } from '../render/fan-polygons';
 import { LevelGraphics } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
@@ -81,6 +93,8 @@ export class SubdivViewer {
   /** This viewer's requests to the page's core. */
   readonly core: CoreSession;
   private levels: Level[] = [];
+  /** Level 0's mesh (the worker keeps one too). */
+  private source: Mesh | null = null;
   private current = 0;
   private name: string | null = null;
   private scheme: SchemeName;
@@ -167,12 +181,15 @@ export class SubdivViewer {
 
   /** Shows `mesh` as level 0 of model `name`; earlier levels are dropped only once it succeeded. */
   async load(mesh: Mesh, name: string): Promise<void> {
-    await this.replaceWith(name, () => this.core.prepare(mesh));
+    await this.replaceWith(name, async () => ({ data: await this.core.prepare(mesh), mesh }));
   }
 
   /** Parses OFF/OBJ text in the worker and shows it. On failure the previous model stays. */
   async loadText(text: string, format: MeshFormat, name: string): Promise<void> {
-    await this.replaceWith(name, () => this.core.parse(text, format));
+    await this.replaceWith(name, async () => {
+      const { level, mesh } = await this.core.parse(text, format);
+      return { data: level, mesh };
+    });
   }
 
   /**
@@ -185,18 +202,10 @@ export class SubdivViewer {
     this.stepping = true;
     const generation = this.generation;
     const from = this.levels.length - 1;
-    const options: SubdivideOptions = {
-      ...this.schemeOptions,
-      scheme: this.scheme,
-      levels: 1,
-      startLevel: from,
-      triangulate: this.triangulate,
-      renderBuffers: true,
-    };
-    const { mesh: source, facts } = this.levels[from].data;
+    const options = this.stepOptions(from, 1);
     this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
     try {
-      const prediction = await this.core.predictSize(source, options);
+      const prediction = await this.withHandle(from, (h) => this.core.predictSize(h, options));
       const estimatedBytes = stepBytes(prediction);
       if (estimatedBytes > this.memoryBudget) {
         this.setBusy(null);
@@ -205,8 +214,11 @@ export class SubdivViewer {
         if (generation !== this.generation) return false;
         this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
       }
-      const data = await this.core.subdivide(source, options, facts);
-      if (generation !== this.generation) return false;
+      const data = await this.withHandle(from, (h) => this.core.subdivide(h, options));
+      if (generation !== this.generation) {
+        this.core.release([data.handle]);
+        return false;
+      }
       this.levels.push({ data, graphics: null });
       this.current = this.levels.length - 1;
       this.show();
@@ -297,15 +309,16 @@ export class SubdivViewer {
 
   /** SVG of the view: camera-facing polygons back to front, and the control mesh when shown. */
   exportSvg(transparent = false): string {
-    const level = this.requireLevel();
-    const base = this.levels[0].data;
+    const { buffers, controlEdges } = this.requireLevel().data;
+    const base = this.levels[0].data.buffers;
+    // The polygons as the core fanned them: the shown level's, in float32.
+    const mesh = { positions: buffers.positions, ...fanPolygons(buffers) };
     const control = this.view.overlay('control')
-      ? { positions: base.buffers.positions, edges: base.buffers.edges, faces: base.mesh }
+      ? { positions: base.positions, edges: base.edges, faces: fanPolygons(base) }
       : null;
-    const { mesh } = level.data;
     const curves =
-      this.view.overlay('curves') && mesh.controlEdges.length > 0
-        ? { positions: mesh.positions, edges: mesh.controlEdges, faces: mesh }
+      this.view.overlay('curves') && controlEdges.length > 0
+        ? { positions: buffers.positions, edges: controlEdges, faces: mesh }
         : null;
     return exportSvg({
       mesh,
@@ -322,18 +335,21 @@ export class SubdivViewer {
    * pieces, so a text beyond a JS string's 512 M characters exports too.
    */
   async exportMesh(format: MeshFormat): Promise<Blob> {
-    const chunks = await this.core.exportMesh(this.requireLevel().data.mesh, format);
+    this.requireLevel();
+    const chunks = await this.withHandle(this.current, (h) => this.core.exportMesh(h, format));
     return new Blob(chunks as BlobPart[], { type: 'text/plain' });
   }
 
-  /** The mesh of the shown level (null before a load). */
-  get mesh(): Mesh | null {
-    return this.levels[this.current]?.data.mesh ?? null;
+  /** A copy of the mesh of level `k` (default: the shown one), from the worker; null before a load. */
+  async meshOf(k = this.current): Promise<Mesh | null> {
+    if (!this.levels[k]) return null;
+    if (k === 0) return this.source;
+    return this.withHandle(k, (h) => this.core.mesh(h));
   }
 
   /** The control mesh (level 0). */
   get controlMesh(): Mesh | null {
-    return this.levels[0]?.data.mesh ?? null;
+    return this.source;
   }
 
   /**
@@ -354,22 +370,29 @@ export class SubdivViewer {
     this.disposed = true;
     this.generation++;
     for (const level of this.levels) level.graphics?.dispose();
-    this.levels = [];
-    this.view.dispose();
     this.core.cancel();
+    this.core.release(this.levels.map((l) => l.data.handle));
+    this.levels = [];
+    this.source = null;
+    this.view.dispose();
     this.listeners.clear();
     this.viewListeners.clear();
   }
 
-  private async replaceWith(name: string, produce: () => Promise<LevelData>): Promise<void> {
+  private async replaceWith(name: string, produce: () => Promise<{ data: LevelData; mesh: Mesh }>): Promise<void> {
     if (this.disposed) throw new CancelledError();
     this.cancel();
     const generation = ++this.generation;
     this.setBusy({ kind: 'load', label: `Loading ${name}…`, since: performance.now() });
     try {
-      const data = await produce();
-      if (generation !== this.generation) return;
+      const { data, mesh } = await produce();
+      if (generation !== this.generation) {
+        this.core.release([data.handle]);
+        return;
+      }
       for (const level of this.levels) level.graphics?.dispose();
+      this.core.release(this.levels.map((l) => l.data.handle));
+      this.source = mesh;
       this.levels = [{ data, graphics: null }];
       this.current = 0;
       this.name = name;
@@ -383,10 +406,61 @@ export class SubdivViewer {
   private truncate(): void {
     this.generation++;
     for (const level of this.levels.slice(1)) level.graphics?.dispose();
+    this.core.release(this.levels.slice(1).map((l) => l.data.handle));
     this.levels = this.levels.slice(0, 1);
     this.current = 0;
     if (this.levels.length > 0) this.show();
     else this.emit();
+  }
+
+  /** Options of `levels` steps from level `from` under the current scheme and options. */
+  private stepOptions(from: number, levels: number): SubdivideOptions {
+    return {
+      ...this.schemeOptions,
+      scheme: this.scheme,
+      levels,
+      startLevel: from,
+      triangulate: this.triangulate,
+      renderBuffers: true,
+    };
+  }
+
+  /**
+   * Runs `request` on level `k`'s handle in the worker. A worker that
+   * restarted since (a cancel, a crash) no longer keeps the level: it is
+   * kept again (level 0, from its mesh) or recomputed from level 0 in one
+   * call (the same result: k single steps equal one call of k levels), and
+   * `request` runs once more.
+   */
+  private async withHandle<T>(k: number, request: (handle: LevelHandle) => Promise<T>): Promise<T> {
+    for (let attempt = 0; ; attempt++) {
+      try {
+        return await request(await this.handleOf(k));
+      } catch (error) {
+        if (!(error instanceof StaleLevelError) || attempt > 0) throw error;
+      }
+    }
+  }
+
+  private async handleOf(k: number): Promise<LevelHandle> {
+    const level = this.levels[k];
+    if (!level) throw new CancelledError();
+    if (level.data.handle.epoch === this.core.client.epoch) return level.data.handle;
+    let handle: LevelHandle;
+    if (k === 0) {
+      if (!this.source) throw new CancelledError();
+      handle = await this.core.keep(this.source, level.data.facts);
+    } else {
+      const base = await this.handleOf(0);
+      handle = (await this.core.subdivide(base, this.stepOptions(0, k))).handle;
+    }
+    // A load or reset while waiting dropped the level: the worker need not keep it.
+    if (this.levels[k] !== level) {
+      this.core.release([handle]);
+      throw new CancelledError();
+    }
+    level.data.handle = handle;
+    return handle;
   }
 
   private requireLevel(): Level {
@@ -396,7 +470,7 @@ export class SubdivViewer {
   }
 
   private graphicsOf(level: Level): LevelGraphics {
-    if (!level.graphics) level.graphics = new LevelGraphics(level.data.buffers, level.data.mesh.controlEdges);
+    if (!level.graphics) level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges);
     return level.graphics;
   }
 
