@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/mesh_build.h"
+#include "core/mesh_check.h"
 
 namespace subdivlab {
 namespace {
@@ -199,6 +200,48 @@ TEST(BuildErrors, NonManifoldVertexBowtie) {
             "non-manifold vertex 0: its faces form 2 separate fans that meet "
             "only at this vertex "
             "(faces 0 and 1)");
+}
+
+/// A disc of n triangles around vertex 0 (open: its rim is the border);
+/// with `twice`, the first triangle is repeated (an edge used twice the
+/// same way).
+Mesh_buffers fan(std::uint32_t n, bool twice) {
+  Mesh_buffers b;
+  b.positions = {0, 0, 0};
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double a = 6.283185307179586 * i / n;
+    b.positions.insert(b.positions.end(), {std::cos(a), std::sin(a), 0});
+  }
+  for (std::uint32_t i = 0; i + 1 < n; ++i) {
+    b.face_sizes.push_back(3);
+    b.face_indices.insert(b.face_indices.end(), {0, i + 1, i + 2});
+  }
+  if (twice) {
+    b.face_sizes.push_back(3);
+    b.face_indices.insert(b.face_indices.end(), {0, 1, 2});
+  }
+  return b;
+}
+
+// One vertex of valence 300 000: the checks are linear in the corners, not
+// in the square of a valence (which took minutes). (CGAL's add_face, which
+// build_mesh then calls, still walks the ring: the fan is checked here.)
+TEST(BuildMesh, AFanOfThreeHundredThousandTrianglesAroundOneVertex) {
+  std::vector<std::uint32_t> corner_halfedges;
+  const Mesh_buffers b = fan(300000, false);
+  ASSERT_TRUE(detail::check_buffers(b, {}, &corner_halfedges).status.ok());
+  ASSERT_EQ(corner_halfedges.size(), 3 * 299999u);
+  // Face i's spoke 0 -> i + 1 is the opposite of face i - 1's i + 1 -> 0.
+  EXPECT_EQ(corner_halfedges[3], corner_halfedges[2] ^ 1u);
+  EXPECT_EQ(corner_halfedges[3 * 299998],
+            corner_halfedges[3 * 299997 + 2] ^ 1u);
+  EXPECT_EQ(
+      detail::check_buffers(fan(300000, true), {}, nullptr).status.message,
+      "non-manifold edge between vertices 0 and 2: used by 3 faces "
+      "(faces 0, 1 and 299999)");
+  Mesh m;
+  ASSERT_TRUE(build_mesh(fan(2000, false), m).ok());
+  EXPECT_EQ(m.degree(Mesh::Vertex_index(0)), 2000u);
 }
 
 TEST(BuildErrors, NonManifoldVertexOfTwoClosedCones) {

@@ -102,76 +102,81 @@ struct Half_edge {
 /// halfedge numbered as check_buffers promises; false at the first doubt,
 /// leaving the problem's naming to the careful pass below it.
 ///
-/// One pass per question instead of sorted half-edges and a union-find:
-/// the corners leaving each vertex (a counting sort by vertex) must have
-/// distinct ends; each corner a -> b finds its opposite among b's; and
-/// around a vertex, corner c -> next(opposite(c)) must chain all its
-/// corners from one start (the one no corner leads to, on a border).
+/// One pass over each vertex's corners instead of sorted half-edges and a
+/// union-find. The corners are listed by the vertex v they leave (a
+/// counting sort), each with its end, the corner before it (arriving at v)
+/// and that corner's start. At v: the ends must be distinct (an edge used
+/// twice in one direction, or by 3+ faces, repeats one); the corner a -> v
+/// arriving before each corner leaving v takes v -> a as its opposite; and
+/// that step, from a corner leaving v to the one leaving v after the
+/// opposite of its predecessor, must chain all of v's corners from one
+/// start (the one nothing leads to, on a border): one fan. The ends are
+/// marked in a table by vertex (stamped with v), and the chain is walked in
+/// v's own list, so that the work is linear in the corners whatever the
+/// valences (a fan of a million triangles included) and mostly reads the
+/// list in order.
 bool manifold_fast(const std::vector<std::uint32_t>& sizes,
                    const std::vector<std::uint32_t>& idx, std::size_t nv,
                    std::vector<std::uint32_t>* corner_halfedges) {
   constexpr std::uint32_t none = 0xffffffffu;
   const std::uint32_t corners = static_cast<std::uint32_t>(idx.size());
-  std::vector<std::uint32_t> next(corners);
-  {
-    std::uint32_t o = 0;
-    for (std::uint32_t k : sizes) {
-      for (std::uint32_t i = 0; i + 1 < k; ++i) next[o + i] = o + i + 1;
-      next[o + k - 1] = o;
-      o += k;
-    }
-  }
-  // Corners by the vertex they leave, in corner order.
   std::vector<std::uint32_t> start(nv + 1, 0);
   for (std::uint32_t v : idx) ++start[v + 1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  // Each with the vertex it goes to, so that a vertex's list is one read.
   struct Leaving {
     std::uint32_t to, corner;
+    std::uint32_t from, arriving;  ///< the corner before: from -> v
   };
   std::vector<Leaving> leaving(corners);
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::uint32_t c = 0; c < corners; ++c)
-      leaving[fill[idx[c]]++] = {idx[next[c]], c};
-  }
-  // Distinct ends: an edge used twice in one direction, or by 3+ faces,
-  // repeats an end.
-  for (std::size_t v = 0; v < nv; ++v) {
-    const std::uint32_t b = start[v], e = start[v + 1];
-    for (std::uint32_t i = b; i < e; ++i)
-      for (std::uint32_t j = i + 1; j < e; ++j)
-        if (leaving[j].to == leaving[i].to) return false;
-  }
-  std::vector<std::uint32_t> opposite(corners, none);
-  for (std::uint32_t c = 0; c < corners; ++c) {
-    const std::uint32_t a = idx[c], b = idx[next[c]];
-    for (std::uint32_t i = start[b]; i < start[b + 1]; ++i) {
-      if (leaving[i].to != a) continue;
-      opposite[c] = leaving[i].corner;
-      break;
+    std::uint32_t o = 0;
+    for (std::uint32_t k : sizes) {
+      for (std::uint32_t i = 0; i < k; ++i) {
+        const std::uint32_t c = o + i;
+        const std::uint32_t n = i + 1 == k ? o : c + 1;
+        const std::uint32_t p = i == 0 ? o + k - 1 : c - 1;
+        leaving[fill[idx[c]]++] = {idx[n], c, idx[p], p};
+      }
+      o += k;
     }
   }
-  // One fan per vertex: c leads to next(opposite(c)).
-  std::vector<std::uint8_t> led_to(corners, 0);
-  for (std::uint32_t c = 0; c < corners; ++c)
-    if (opposite[c] != none) led_to[next[opposite[c]]] = 1;
+  std::vector<std::uint32_t> opposite(corners, none);
+  std::vector<std::uint32_t> stamp(nv, none), at(nv);
+  // The chain at the vertex at hand, by position in its list.
+  std::vector<std::uint32_t> step;
+  std::vector<std::uint8_t> led_to;
   for (std::size_t v = 0; v < nv; ++v) {
-    const std::uint32_t b = start[v], e = start[v + 1];
-    if (e - b < 2) continue;
-    std::uint32_t first = leaving[b].corner;
+    const std::uint32_t b = start[v], e = start[v + 1], n = e - b;
+    const std::uint32_t mark = static_cast<std::uint32_t>(v);
     for (std::uint32_t i = b; i < e; ++i) {
-      if (led_to[leaving[i].corner] != 0) continue;
-      first = leaving[i].corner;
+      const std::uint32_t to = leaving[i].to;
+      if (stamp[to] == mark) return false;
+      stamp[to] = mark;
+      at[to] = i - b;
+    }
+    step.assign(n, none);
+    led_to.assign(n, 0);
+    for (std::uint32_t i = b; i < e; ++i) {
+      const std::uint32_t a = leaving[i].from;
+      if (stamp[a] != mark) continue;  // a border edge arrives here
+      const std::uint32_t j = at[a];
+      opposite[leaving[i].arriving] = leaving[b + j].corner;
+      step[i - b] = j;
+      led_to[j] = 1;
+    }
+    if (n < 2) continue;
+    std::uint32_t first = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (led_to[i] != 0) continue;
+      first = i;
       break;
     }
     std::uint32_t walked = 1;
-    for (std::uint32_t c = first; opposite[c] != none;) {
-      c = next[opposite[c]];
-      if (c == first) break;
-      if (++walked > e - b) return false;
+    for (std::uint32_t i = step[first]; i != none && i != first; i = step[i]) {
+      if (++walked > n) return false;
     }
-    if (walked != e - b) return false;
+    if (walked != n) return false;
   }
   if (corner_halfedges != nullptr) {
     std::vector<std::uint32_t>& out = *corner_halfedges;
