@@ -89,6 +89,30 @@ std::vector<std::uint32_t> edges_by_map(const Mesh_buffers& m) {
   return out;
 }
 
+std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted_pairs(
+    const std::vector<std::uint32_t>& edges) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t i = 0; i < edges.size(); i += 2)
+    pairs.emplace_back(edges[i], edges[i + 1]);
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+/// The edges of the corners a -> b with a < b, in corner order.
+std::vector<std::uint32_t> edges_going_up(const Mesh_buffers& m) {
+  std::vector<std::uint32_t> out;
+  std::size_t at = 0;
+  for (std::uint32_t size : m.face_sizes) {
+    for (std::uint32_t k = 0; k < size; ++k) {
+      const std::uint32_t a = m.face_indices[at + k];
+      const std::uint32_t b = m.face_indices[at + (k + 1) % size];
+      if (a < b) out.insert(out.end(), {a, b});
+    }
+    at += size;
+  }
+  return out;
+}
+
 /// Vertex normals as (b - a) x (c - a) summed over the fan triangles.
 std::vector<double> normals_by_fan(const Mesh_buffers& m) {
   std::vector<double> n(m.positions.size(), 0.0);
@@ -158,6 +182,10 @@ TEST(RenderBuffers, FansAPolygonFromItsFirstCorner) {
   EXPECT_EQ(r.triangle_face, (std::vector<std::uint32_t>{0, 0, 0}));
   EXPECT_EQ(r.edges,
             (std::vector<std::uint32_t>{0, 1, 0, 4, 1, 2, 2, 3, 3, 4}));
+  // Open, with its edge 4 -> 0 going down: told 5 edges, it still sorts.
+  Recorder told;
+  EXPECT_EQ(build_render_buffers(pentagon, told, 5), 5u);
+  EXPECT_EQ(told.out.edges, r.edges);
   // A flat counter-clockwise polygon: every normal is +z.
   for (std::size_t v = 0; v < 5; ++v) {
     EXPECT_EQ(r.normals[3 * v], 0.0f);
@@ -178,6 +206,14 @@ TEST(RenderBuffers, EdgesAndNormalsEqualPlainOnesOnFixturesAndTheirLevels) {
     for (const Mesh_buffers* m : {&base, &refined.value}) {
       const Render_buffers r = render_buffers(*m);
       EXPECT_EQ(r.edges, edges_by_map(*m));
+      // Told its number of edges, a closed mesh lists them in one pass:
+      // the same set, in the order of the corners going up.
+      Recorder told;
+      const std::size_t edges = r.edges.size() / 2;
+      EXPECT_EQ(build_render_buffers(*m, told, edges), edges);
+      EXPECT_EQ(sorted_pairs(told.out.edges), sorted_pairs(r.edges));
+      if (compute_facts(*m).value.closed)
+        EXPECT_EQ(told.out.edges, edges_going_up(*m));
       const std::vector<double> n = normals_by_fan(*m);
       ASSERT_EQ(r.normals.size(), n.size());
       for (std::size_t i = 0; i < n.size(); ++i)

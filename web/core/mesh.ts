@@ -92,7 +92,10 @@ export interface RenderBuffers {
   normals: Float32Array;
   /** Triangle vertex indices (3 per triangle). */
   triangles: Uint32Array;
-  /** Unique polygon edges as vertex index pairs, smaller index first, ordered by it (quads stay quads: no diagonals). */
+  /**
+   * Unique polygon edges as vertex index pairs, smaller index first (quads stay quads: no diagonals); on a
+   * closed mesh in the order of the corners going up, otherwise ordered by the smaller index.
+   */
   edges: Uint32Array;
   /** For each triangle, the polygon (face) it came from. */
   triangleFace: Uint32Array;

@@ -8,7 +8,7 @@ namespace subdivlab {
 
 Result<Mesh_facts> view_mesh(const Mesh_buffers& mesh, Render_sink& sink) {
   Result<Mesh_facts> facts = compute_facts(mesh);
-  if (facts.ok()) build_render_buffers(mesh, sink);
+  if (facts.ok()) build_render_buffers(mesh, sink, facts.value.edges);
   return facts;
 }
 
@@ -25,7 +25,16 @@ Result<Mesh_facts> view_step(const Mesh_buffers& in,
     return r;
   }
   out = std::move(step.value);
-  const std::size_t edges = build_render_buffers(out, sink);
+  // Every scheme keeps the Euler characteristic: E = V + F - chi (in
+  // double: the parent's may be any number).
+  const double expected = static_cast<double>(out.vertex_count()) +
+                          static_cast<double>(out.face_count()) -
+                          static_cast<double>(parent.euler_characteristic);
+  const std::size_t edges =
+      build_render_buffers(out, sink,
+                           expected > 0 && expected < 4294967296.0
+                               ? static_cast<std::size_t>(expected)
+                               : 0);
   if (!refined_facts(out, edges, parent, r.value)) r = compute_facts(out);
   return r;
 }

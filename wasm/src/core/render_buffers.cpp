@@ -44,11 +44,14 @@ void triangle_faces(const Mesh_buffers& mesh, std::vector<std::uint32_t>& out) {
     for (std::uint32_t k = 2; k < mesh.face_sizes[f]; ++k) *t++ = f;
 }
 
-/// Summed in double (a float sum drifts on a vertex of high valence), then
-/// normalized as three.js's Vector3.normalize does: a zero sum stays zero.
+/// Each triangle's normal (computed in double) summed in the float output,
+/// then normalized as three.js's Vector3.normalize does: a zero sum stays
+/// zero. (A double sum would double the memory the scatter touches, for
+/// nothing a picture shows.)
 void vertex_normals(const Mesh_buffers& mesh, std::vector<float>& out) {
   const std::size_t n = mesh.vertex_count();
-  std::vector<double> sum(3 * n, 0.0);
+  out.assign(3 * n, 0.0f);
+  float* sum = out.data();
   const double* p = mesh.positions.data();
   const std::uint32_t* corner = mesh.face_indices.data();
   for (std::uint32_t size : mesh.face_sizes) {
@@ -60,9 +63,9 @@ void vertex_normals(const Mesh_buffers& mesh, std::vector<float>& out) {
                             p[3 * c + 2] - p[3 * b + 2]};
       const double ab[3] = {p[3 * a] - p[3 * b], p[3 * a + 1] - p[3 * b + 1],
                             p[3 * a + 2] - p[3 * b + 2]};
-      const double nx = cb[1] * ab[2] - cb[2] * ab[1];
-      const double ny = cb[2] * ab[0] - cb[0] * ab[2];
-      const double nz = cb[0] * ab[1] - cb[1] * ab[0];
+      const float nx = static_cast<float>(cb[1] * ab[2] - cb[2] * ab[1]);
+      const float ny = static_cast<float>(cb[2] * ab[0] - cb[0] * ab[2]);
+      const float nz = static_cast<float>(cb[0] * ab[1] - cb[1] * ab[0]);
       for (std::uint32_t v : {a, b, c}) {
         sum[3 * v] += nx;
         sum[3 * v + 1] += ny;
@@ -71,15 +74,43 @@ void vertex_normals(const Mesh_buffers& mesh, std::vector<float>& out) {
     }
     corner += size;
   }
-  out.resize(3 * n);
   for (std::size_t v = 0; v < n; ++v) {
     const double x = sum[3 * v], y = sum[3 * v + 1], z = sum[3 * v + 2];
     const double length = std::sqrt(x * x + y * y + z * z);
     const double scale = length > 0 ? 1 / length : 0;
-    out[3 * v] = static_cast<float>(x * scale);
-    out[3 * v + 1] = static_cast<float>(y * scale);
-    out[3 * v + 2] = static_cast<float>(z * scale);
+    sum[3 * v] = static_cast<float>(x * scale);
+    sum[3 * v + 1] = static_cast<float>(y * scale);
+    sum[3 * v + 2] = static_cast<float>(z * scale);
   }
+}
+
+/// The edges of the corners that go from a smaller to a larger vertex, in
+/// corner order, when they are all `expected` edges (every edge of a closed
+/// mesh has one such corner, and one only); otherwise false, `out` unset.
+bool edges_going_up(const Mesh_buffers& mesh, std::size_t expected,
+                    std::vector<std::uint32_t>& out) {
+  const std::uint32_t* fv = mesh.face_indices.data();
+  std::size_t up = 0, at = 0;
+  for (std::uint32_t size : mesh.face_sizes) {
+    for (std::uint32_t k = 0; k < size; ++k)
+      up += fv[at + k] < fv[at + (k + 1 == size ? 0 : k + 1)];
+    at += size;
+  }
+  if (up != expected) return false;
+  out.resize(2 * up);
+  std::uint32_t* e = out.data();
+  at = 0;
+  for (std::uint32_t size : mesh.face_sizes) {
+    for (std::uint32_t k = 0; k < size; ++k) {
+      const std::uint32_t a = fv[at + k];
+      const std::uint32_t b = fv[at + (k + 1 == size ? 0 : k + 1)];
+      if (a >= b) continue;
+      *e++ = a;
+      *e++ = b;
+    }
+    at += size;
+  }
+  return true;
 }
 
 /// Every polygon edge once, bucketed by its smaller vertex: the larger
@@ -141,7 +172,8 @@ std::size_t polygon_edges(const Mesh_buffers& mesh,
 
 }  // namespace
 
-std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink) {
+std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
+                                 std::size_t expected_edges) {
   {
     std::vector<float> positions(mesh.positions.begin(), mesh.positions.end());
     sink.floats(Render_array::positions, positions);
@@ -162,7 +194,10 @@ std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink) {
     sink.indices(Render_array::triangle_face, faces);
   }
   std::vector<std::uint32_t> edges;
-  const std::size_t count = polygon_edges(mesh, edges);
+  const std::size_t count =
+      expected_edges > 0 && edges_going_up(mesh, expected_edges, edges)
+          ? expected_edges
+          : polygon_edges(mesh, edges);
   sink.indices(Render_array::edges, edges);
   return count;
 }

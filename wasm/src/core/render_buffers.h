@@ -21,8 +21,11 @@ namespace subdivlab {
 ///   triangles      each polygon fanned from its first corner: 0 k k+1
 ///   triangle_face  the polygon each triangle came from
 ///   edges          every polygon edge once (quads stay quads: no fan
-///                  diagonals), as its smaller then larger vertex, ordered
-///                  by the smaller one, then by first appearance
+///                  diagonals), as its smaller then larger vertex; in the
+///                  order of the corners going from smaller to larger when
+///                  they give all the edges the caller expects (a closed
+///                  mesh: one pass), otherwise ordered by the smaller
+///                  vertex, then by first appearance
 enum class Render_array { positions, normals, triangles, triangle_face, edges };
 
 /// Receives the arrays one at a time; each is freed when the call returns,
@@ -37,8 +40,10 @@ class Render_sink {
 
 /// Builds the arrays of `mesh` (a valid mesh: every edge in at most two
 /// faces) in the order of Render_array and hands each to `sink`. Returns
-/// the number of edges.
-std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink);
+/// the number of edges. `expected_edges` (0: unknown) is the mesh's number
+/// of edges, which lets a closed mesh skip the sort of its edges.
+std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
+                                 std::size_t expected_edges = 0);
 
 /// Bytes the arrays and their scratch take at most at once, beside the
 /// mesh, for V vertices, E edges, C corners and T fan triangles.
