@@ -46,7 +46,9 @@ struct Recorder : Render_sink {
   Render_buffers out;
   void floats(Render_array which, const std::vector<float>& v) override {
     order.push_back(which);
-    (which == Render_array::positions ? out.positions : out.normals) = v;
+    if (which == Render_array::positions) out.positions = v;
+    if (which == Render_array::bounding_sphere) out.bounding_sphere = v;
+    if (which == Render_array::normals) out.normals = v;
   }
   void indices(Render_array which,
                const std::vector<std::uint32_t>& v) override {
@@ -150,9 +152,9 @@ TEST(RenderBuffers, CubeIsTwelveTrianglesAndTwelveEdges) {
   Recorder r;
   EXPECT_EQ(build_render_buffers(cube, r), 12u);
   EXPECT_EQ(r.order, (std::vector<Render_array>{
-                         Render_array::positions, Render_array::normals,
-                         Render_array::triangles, Render_array::triangle_face,
-                         Render_array::edges}));
+                         Render_array::positions, Render_array::bounding_sphere,
+                         Render_array::normals, Render_array::triangles,
+                         Render_array::triangle_face, Render_array::edges}));
   EXPECT_EQ(r.out.triangles.size(), 36u);
   EXPECT_EQ(r.out.triangle_face,
             (std::vector<std::uint32_t>{0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5}));
@@ -168,6 +170,13 @@ TEST(RenderBuffers, CubeIsTwelveTrianglesAndTwelveEdges) {
   }
   EXPECT_EQ(r.out.positions,
             std::vector<float>(cube.positions.begin(), cube.positions.end()));
+  // The cube spans [-1, 1]^3: centred at 0, radius sqrt(3).
+  ASSERT_EQ(r.out.bounding_sphere.size(), 4u);
+  EXPECT_EQ(r.out.bounding_sphere[0], 0.0f);
+  EXPECT_EQ(r.out.bounding_sphere[1], 0.0f);
+  EXPECT_EQ(r.out.bounding_sphere[2], 0.0f);
+  EXPECT_NEAR(r.out.bounding_sphere[3], std::sqrt(3.0), 1e-5);
+  EXPECT_GE(r.out.bounding_sphere[3], std::sqrt(3.0f));
 }
 
 TEST(RenderBuffers, FansAPolygonFromItsFirstCorner) {

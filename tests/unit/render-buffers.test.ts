@@ -40,6 +40,10 @@ describe('render buffers from the core', () => {
     }
     expect(r.positions).toBeInstanceOf(Float32Array);
     expect(Array.from(r.positions)).toEqual(Array.from(cube.positions));
+    // The cube spans [-1, 1]³: the sphere three.js would compute, centred at 0 with radius √3.
+    expect(Array.from(r.boundingSphere.subarray(0, 3))).toEqual([0, 0, 0]);
+    expect(r.boundingSphere[3]).toBeCloseTo(Math.sqrt(3), 5);
+    expect(r.boundingSphere[3]).toBeGreaterThanOrEqual(Math.fround(Math.sqrt(3)));
     // Each corner of the cube: its normal points away from the centre, into its octant.
     for (let v = 0; v < 8; v++) {
       for (let k = 0; k < 3; k++) expect(Math.sign(r.normals[3 * v + k])).toBe(Math.sign(cube.positions[3 * v + k]));
@@ -93,7 +97,12 @@ describe('fanPolygons', () => {
   );
 
   it('gives nothing for no triangles', () => {
-    const empty = { positions: new Float32Array(0), normals: new Float32Array(0), triangles: new Uint32Array(0) };
+    const empty = {
+      positions: new Float32Array(0),
+      boundingSphere: new Float32Array(4),
+      normals: new Float32Array(0),
+      triangles: new Uint32Array(0),
+    };
     const polygons = fanPolygons({ ...empty, edges: new Uint32Array(0), triangleFace: new Uint32Array(0) });
     expect(polygons.faceSizes.length).toBe(0);
     expect(polygons.faceIndices.length).toBe(0);

@@ -401,6 +401,8 @@ class Js_render_sink : public Render_sink {
     switch (which) {
       case Render_array::positions:
         return "positions";
+      case Render_array::bounding_sphere:
+        return "boundingSphere";
       case Render_array::normals:
         return "normals";
       case Render_array::triangles:

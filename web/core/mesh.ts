@@ -88,6 +88,8 @@ export interface MeshFacts {
  */
 export interface RenderBuffers {
   positions: Float32Array;
+  /** Centre x, y, z and radius: the bounding box's centre and the largest distance from it (three.js's). */
+  boundingSphere: Float32Array;
   /** Unit vertex normals: fan triangle normals weighted by area, summed (three.js's computeVertexNormals). */
   normals: Float32Array;
   /** Triangle vertex indices (3 per triangle). */

@@ -56,8 +56,8 @@ function levelData(mesh: Mesh, facts: MeshFacts, buffers: RenderBuffers, ms: num
 
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
 function buffersOf(level: LevelData): Transferable[] {
-  const { positions, normals, triangles, edges, triangleFace } = level.buffers;
-  const arrays = [positions, normals, triangles, edges, triangleFace, level.controlEdges];
+  const { positions, boundingSphere, normals, triangles, edges, triangleFace } = level.buffers;
+  const arrays = [positions, boundingSphere, normals, triangles, edges, triangleFace, level.controlEdges];
   return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
 }
 

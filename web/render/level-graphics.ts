@@ -4,7 +4,7 @@
  * edges (so quads are drawn as quads, never as triangle pairs). Both share
  * one position attribute. Call dispose() when the level is dropped.
  */
-import { BufferAttribute, BufferGeometry, type Sphere } from 'three';
+import { BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import type { RenderBuffers } from '../core/mesh';
 
 export class LevelGraphics {
@@ -21,23 +21,27 @@ export class LevelGraphics {
     this.surface.setAttribute('position', position);
     this.surface.setIndex(new BufferAttribute(buffers.triangles, 1));
     this.surface.setAttribute('normal', new BufferAttribute(buffers.normals, 3));
-    this.surface.computeBoundingSphere();
+    // The core's sphere: three would otherwise walk every vertex on the main thread, once per geometry.
+    const [x, y, z, r] = buffers.boundingSphere;
+    const sphere = new Sphere(new Vector3(x, y, z), r);
+    this.surface.boundingSphere = sphere;
 
     this.edges = new BufferGeometry();
     this.edges.setAttribute('position', position);
     this.edges.setIndex(new BufferAttribute(buffers.edges, 1));
+    this.edges.boundingSphere = sphere.clone();
 
     this.curves = null;
     if (controlEdges.length > 0) {
       this.curves = new BufferGeometry();
       this.curves.setAttribute('position', position);
       this.curves.setIndex(new BufferAttribute(controlEdges, 1));
+      this.curves.boundingSphere = sphere.clone();
     }
   }
 
   /** Bounding sphere of the surface. */
   get boundingSphere(): Sphere {
-    if (!this.surface.boundingSphere) this.surface.computeBoundingSphere();
     return this.surface.boundingSphere as Sphere;
   }
 

@@ -16,6 +16,32 @@ namespace {
 /// Marks a corner whose edge an earlier corner gave.
 constexpr std::uint32_t kNoEdge = 0xffffffffu;
 
+/// Centre of the bounding box and the largest distance from it (empty: a
+/// zero sphere), the radius rounded up so that the float sphere holds
+/// every point.
+std::vector<float> bounding_sphere(const Mesh_buffers& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  const double* p = mesh.positions.data();
+  if (n == 0) return {0, 0, 0, 0};
+  double lo[3] = {p[0], p[1], p[2]}, hi[3] = {p[0], p[1], p[2]};
+  for (std::size_t v = 1; v < n; ++v)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[3 * v + a]);
+      hi[a] = std::max(hi[a], p[3 * v + a]);
+    }
+  const double c[3] = {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2,
+                       (lo[2] + hi[2]) / 2};
+  double r2 = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    const double x = p[3 * v] - c[0], y = p[3 * v + 1] - c[1],
+                 z = p[3 * v + 2] - c[2];
+    r2 = std::max(r2, x * x + y * y + z * z);
+  }
+  return {static_cast<float>(c[0]), static_cast<float>(c[1]),
+          static_cast<float>(c[2]),
+          static_cast<float>(std::sqrt(r2) * (1 + 1e-6))};
+}
+
 std::size_t fan_triangle_count(const Mesh_buffers& mesh) {
   std::size_t count = 0;
   for (std::uint32_t size : mesh.face_sizes) count += size - 2;
@@ -178,6 +204,7 @@ std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
     std::vector<float> positions(mesh.positions.begin(), mesh.positions.end());
     sink.floats(Render_array::positions, positions);
   }
+  sink.floats(Render_array::bounding_sphere, bounding_sphere(mesh));
   {
     std::vector<float> normals;
     vertex_normals(mesh, normals);
@@ -214,7 +241,12 @@ Render_buffers render_buffers(const Mesh_buffers& mesh) {
   struct Collect : Render_sink {
     Render_buffers out;
     void floats(Render_array which, const std::vector<float>& v) override {
-      (which == Render_array::positions ? out.positions : out.normals) = v;
+      if (which == Render_array::positions)
+        out.positions = v;
+      else if (which == Render_array::bounding_sphere)
+        out.bounding_sphere = v;
+      else
+        out.normals = v;
     }
     void indices(Render_array which,
                  const std::vector<std::uint32_t>& v) override {

@@ -14,6 +14,9 @@ namespace subdivlab {
 
 /// The arrays of a level's picture:
 ///   positions      x y z per vertex, as float
+///   bounding_sphere  centre x y z and radius: the centre of the bounding
+///                  box and the largest distance from it, as three.js's
+///                  computeBoundingSphere makes it (radius rounded up)
 ///   normals        per vertex: the sum of the normals of its fan triangles,
 ///                  each weighted by the triangle's area, normalized (zero
 ///                  where that sum is zero), as three.js's
@@ -26,7 +29,14 @@ namespace subdivlab {
 ///                  they give all the edges the caller expects (a closed
 ///                  mesh: one pass), otherwise ordered by the smaller
 ///                  vertex, then by first appearance
-enum class Render_array { positions, normals, triangles, triangle_face, edges };
+enum class Render_array {
+  positions,
+  bounding_sphere,
+  normals,
+  triangles,
+  triangle_face,
+  edges
+};
 
 /// Receives the arrays one at a time; each is freed when the call returns,
 /// so that only one of them is in memory beside the mesh.
@@ -52,7 +62,7 @@ double render_peak_bytes(double vertices, double edges, double corners,
 
 /// All the arrays at once (tests, and callers without a sink).
 struct Render_buffers {
-  std::vector<float> positions, normals;
+  std::vector<float> positions, bounding_sphere, normals;
   std::vector<std::uint32_t> triangles, triangle_face, edges;
 };
 Render_buffers render_buffers(const Mesh_buffers& mesh);
