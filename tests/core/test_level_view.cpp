@@ -336,5 +336,39 @@ TEST(LevelView, ALoadedMeshHasCgalsFactsAndItsArrays) {
   EXPECT_TRUE(refused.order.empty());
 }
 
+TEST(LevelView, ReadViewEqualsReadMeshThenViewMesh) {
+  for (const char* fixture : kFixtures) {
+    SCOPED_TRACE(fixture);
+    std::ifstream in(std::string(FIXTURES_DIR) + "/" + fixture,
+                     std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    Mesh_buffers mesh;
+    Recorder once;
+    const Result<Mesh_facts> read =
+        read_view(text.str(), Mesh_format::off, mesh, once);
+    ASSERT_TRUE(read.ok());
+    const Mesh_buffers plain = load(fixture);
+    EXPECT_EQ(mesh.positions, plain.positions);
+    EXPECT_EQ(mesh.face_indices, plain.face_indices);
+    Recorder twice;
+    const Result<Mesh_facts> viewed = view_mesh(plain, twice);
+    expect_same_facts(read.value, viewed.value);
+    EXPECT_EQ(once.out.edges, twice.out.edges);
+    EXPECT_EQ(once.out.normals, twice.out.normals);
+    EXPECT_EQ(once.out.triangles, twice.out.triangles);
+  }
+  // A refusal is read_mesh's, line and all, and hands out nothing.
+  const std::string bad = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+  Mesh_buffers mesh;
+  Recorder sink;
+  const Result<Mesh_facts> r = read_view(bad, Mesh_format::off, mesh, sink);
+  const Result<Mesh_buffers> plain = read_mesh(bad, Mesh_format::off);
+  EXPECT_EQ(r.status.code, plain.status.code);
+  EXPECT_EQ(r.status.message, plain.status.message);
+  EXPECT_EQ(r.status.line, 6);
+  EXPECT_TRUE(sink.order.empty());
+}
+
 }  // namespace
 }  // namespace subdivlab

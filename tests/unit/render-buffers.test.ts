@@ -6,7 +6,16 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import type { Mesh, SchemeName } from '../../web/core/mesh';
-import { meshFacts, predictSize, subdivide, subdivideForView, viewMesh } from '../../web/core/subdiv-core';
+import {
+  exportMesh,
+  meshFacts,
+  parseForView,
+  parseMesh,
+  predictSize,
+  subdivide,
+  subdivideForView,
+  viewMesh,
+} from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
 import { fanPolygons } from '../../web/render/fan-polygons';
 import { loadFixture } from './test-helpers';
@@ -106,6 +115,34 @@ describe('fanPolygons', () => {
     const polygons = fanPolygons({ ...empty, edges: new Uint32Array(0), triangleFace: new Uint32Array(0) });
     expect(polygons.faceSizes.length).toBe(0);
     expect(polygons.faceIndices.length).toBe(0);
+  });
+});
+
+describe('parseForView', () => {
+  it.each(['mixed-open.off', 'torus-quad.off', 'cube.obj'])(
+    '%s: the mesh, facts and buffers of parseMesh then viewMesh',
+    (fixture) => {
+      const mesh = loadFixture(fixture);
+      const format = fixture.endsWith('.obj') ? 'obj' : 'off';
+      const text = exportMesh(mesh, format);
+      const once = parseForView(text, format);
+      const twice = viewMesh(parseMesh(text, format));
+      expect(once.mesh).toEqual(twice.mesh);
+      expect(once.facts).toEqual(twice.facts);
+      expect(once.buffers).toEqual(twice.buffers);
+    },
+  );
+
+  it('refuses what parseMesh refuses, with its line', () => {
+    const bad = 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n';
+    expect(() => parseForView(bad, 'off')).toThrow(SubdivError);
+    let line = 0;
+    try {
+      parseForView(bad, 'off');
+    } catch (e) {
+      line = (e as SubdivError).line;
+    }
+    expect(line).toBe(6);
   });
 });
 

@@ -439,6 +439,24 @@ val js_view_mesh(const val& mesh) {
   });
 }
 
+/// { mesh, facts, buffers } of OFF/OBJ text (as read_mesh takes it).
+val js_read_view(const std::string& text, const std::string& format_name) {
+  return guarded([&] {
+    Mesh_format format;
+    if (!parse_format(format_name, format))
+      return to_js_status(unknown_format(format_name));
+    Mesh_buffers mesh;
+    Js_render_sink sink;
+    const Result<Mesh_facts> facts = read_view(text, format, mesh, sink);
+    if (!facts.ok()) return to_js_status(facts.status);
+    val out = ok_object();
+    out.set("mesh", to_js_mesh(mesh));
+    out.set("facts", to_js_facts(facts.value));
+    out.set("buffers", sink.out);
+    return out;
+  });
+}
+
 /// { mesh, facts, buffers } of a step from a mesh whose facts are `parent`.
 val js_subdivide_view(const val& mesh, const val& js_options,
                       const val& parent) {
@@ -548,6 +566,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("predict_size", &subdivlab::js_predict_size);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
+  emscripten::function("read_view", &subdivlab::js_read_view);
   emscripten::function("subdivide_view", &subdivlab::js_subdivide_view);
   emscripten::function("scheme_names", &subdivlab::js_scheme_names);
   emscripten::function("scheme_info", &subdivlab::js_scheme_info);

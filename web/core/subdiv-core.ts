@@ -39,6 +39,7 @@ interface CoreModule {
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
+  read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
   subdivide_view(mesh: Mesh, options: CoreOptions, parent: MeshFacts): RawResult<LevelView>;
   scheme_names(): RawResult<{ names: string[] }>;
   scheme_info(): RawResult<CoreSchemeInfo>;
@@ -128,6 +129,17 @@ export function parseMesh(text: string | Uint8Array, format: MeshFormat): Mesh {
   // TextEncoder is native; embind's own string conversion is a JS loop.
   const bytes = typeof text === 'string' ? encoder.encode(text) : text;
   return unwrap(module().read_mesh(bytes, format)).mesh;
+}
+
+/**
+ * {@link parseMesh} and, in the same call, the mesh's facts and render
+ * buffers ({@link viewMesh}): what a viewer shows of a loaded file, with the
+ * mesh checked once.
+ */
+export function parseForView(text: string | Uint8Array, format: MeshFormat): LevelView {
+  const bytes = typeof text === 'string' ? encoder.encode(text) : text;
+  const { mesh, facts, buffers } = unwrap(module().read_view(bytes, format));
+  return { mesh, facts, buffers };
 }
 
 /** Default bound of the pieces {@link writeMesh} hands out: 1 MiB. */

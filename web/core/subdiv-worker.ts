@@ -9,7 +9,7 @@ import {
   checkRules,
   exportMeshChunks,
   init,
-  parseMesh,
+  parseForView,
   predictSize,
   schemeNames,
   subdivideForView,
@@ -89,7 +89,7 @@ const handlers: Handlers = {
   },
   async parse({ text, format }) {
     await init();
-    const { mesh, facts, buffers } = viewMesh(parseMesh(text, format));
+    const { mesh, facts, buffers } = parseForView(text, format);
     const level = levelData(mesh, facts, buffers, 0);
     const copy = copyOf(mesh);
     return { value: { level, mesh: copy }, transfer: [...buffersOf(level), ...meshBuffers(copy)] };

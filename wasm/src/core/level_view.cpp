@@ -2,7 +2,11 @@
 
 #include "level_view.h"
 
+#include <cstdint>
 #include <utility>
+#include <vector>
+
+#include "mesh_build.h"
 
 namespace subdivlab {
 
@@ -10,6 +14,26 @@ Result<Mesh_facts> view_mesh(const Mesh_buffers& mesh, Render_sink& sink) {
   Result<Mesh_facts> facts = compute_facts(mesh);
   if (facts.ok()) build_render_buffers(mesh, sink, facts.value.edges);
   return facts;
+}
+
+Result<Mesh_facts> read_view(std::string_view text, Mesh_format format,
+                             Mesh_buffers& out, Render_sink& sink) {
+  Result<Mesh_facts> r;
+  std::vector<std::uint32_t> corner_halfedges;
+  Result<Mesh_buffers> read = read_mesh(text, format, &corner_halfedges);
+  if (!read.ok()) {
+    r.status = read.status;
+    return r;
+  }
+  out = std::move(read.value);
+  {
+    Mesh mesh;
+    build_checked_mesh(out, corner_halfedges, mesh);
+    r.value = compute_facts(mesh);
+  }
+  r.value.control_edges = out.control_edges.size() / 2;
+  build_render_buffers(out, sink, r.value.edges);
+  return r;
 }
 
 Result<Mesh_facts> view_step(const Mesh_buffers& in,

@@ -3,7 +3,10 @@
 // mesh itself. Owner: level_view.cpp.
 #pragma once
 
+#include <string_view>
+
 #include "mesh_facts.h"
+#include "mesh_io.h"
 #include "mesh_types.h"
 #include "render_buffers.h"
 #include "subdivide.h"
@@ -13,6 +16,12 @@ namespace subdivlab {
 /// Facts (CGAL's, from a Surface_mesh: the load checks the mesh once
 /// more) of a loaded mesh, and its render arrays handed to `sink`.
 Result<Mesh_facts> view_mesh(const Mesh_buffers& mesh, Render_sink& sink);
+
+/// read_mesh(text, format) into `out`, its facts (CGAL's, from the
+/// Surface_mesh built from the reader's checked tables: one check, not
+/// two) and its render arrays handed to `sink`.
+Result<Mesh_facts> read_view(std::string_view text, Mesh_format format,
+                             Mesh_buffers& out, Render_sink& sink);
 
 /// `subdivide_mesh(in, options)` into `out` (its memory check counting
 /// the render arrays: Subdivide_options::render_buffers), its render arrays

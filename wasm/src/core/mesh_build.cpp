@@ -446,6 +446,15 @@ Mesh_buffers drop_isolated_vertices(Mesh_buffers in) {
 
 }  // namespace detail
 
+Status build_mesh(const Mesh_buffers& in, Mesh& out) {
+  out.clear();
+  std::vector<std::uint32_t> ch;
+  const detail::Check_result check = detail::check_buffers(in, {}, &ch);
+  if (!check.status.ok()) return check.status;
+  build_checked_mesh(in, ch, out);
+  return Status::success();
+}
+
 /// The mesh is built from its tables, each element set once, rather than
 /// by Surface_mesh::add_face, whose bookkeeping circulates the vertices of
 /// every face it adds (quadratic in a valence: 0.6 s for a fan of 20 000
@@ -465,12 +474,9 @@ Mesh_buffers drop_isolated_vertices(Mesh_buffers in) {
 ///     were border halfedges, and the one into v was halfedge(v).
 /// A test builds every fixture both ways and compares them element by
 /// element, the faces also in shuffled orders.
-Status build_mesh(const Mesh_buffers& in, Mesh& out) {
+void build_checked_mesh(const Mesh_buffers& in,
+                        const std::vector<std::uint32_t>& ch, Mesh& out) {
   out.clear();
-  std::vector<std::uint32_t> ch;
-  const detail::Check_result check = detail::check_buffers(in, {}, &ch);
-  if (!check.status.ok()) return check.status;
-
   using V = Mesh::Vertex_index;
   using H = Mesh::Halfedge_index;
   using F = Mesh::Face_index;
@@ -537,7 +543,6 @@ Status build_mesh(const Mesh_buffers& in, Mesh& out) {
   for (std::uint32_t h = 0; h < halfedges; ++h)
     if (!inner[h]) out.set_next(H(h), H(leaving[out.target(H(h))]));
   for (std::uint32_t v = 0; v < n_used; ++v) out.set_halfedge(V(v), H(into[v]));
-  return Status::success();
 }
 
 Mesh_buffers to_buffers(const Mesh& mesh) {

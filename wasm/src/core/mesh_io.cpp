@@ -400,15 +400,17 @@ bool read_coordinate(std::string_view tok, int line, const std::string& what,
 const char* const axis_name[3] = {"x", "y", "z"};
 
 /// The checks build_mesh makes, with faces named by their lines; then the
-/// isolated vertices go.
+/// isolated vertices go (the corners' halfedges stay as they are).
 Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
                             const std::vector<int>& face_lines,
-                            std::uint32_t vertex_offset) {
+                            std::uint32_t vertex_offset,
+                            std::vector<std::uint32_t>* corner_halfedges) {
   detail::Check_naming naming;
   naming.face_lines = &face_lines;
   naming.vertex_offset = vertex_offset;
   Result<Mesh_buffers> r;
-  detail::Check_result check = detail::check_buffers(mesh, naming);
+  detail::Check_result check =
+      detail::check_buffers(mesh, naming, corner_halfedges);
   if (!check.status.ok()) {
     r.status = std::move(check.status);
     return r;
@@ -419,7 +421,8 @@ Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
 
 // ---------------------------------------------------------------- OFF
 
-Result<Mesh_buffers> read_off(std::string_view text) {
+Result<Mesh_buffers> read_off(std::string_view text,
+                              std::vector<std::uint32_t>* corner_halfedges) {
   Line_reader in(text);
   std::vector<std::string_view> tok;
   int line = 0;
@@ -607,7 +610,7 @@ Result<Mesh_buffers> read_off(std::string_view text) {
                                 " faces the header declares (header counts "
                                 "disagree with the data)");
   }
-  return finish(std::move(mesh), face_lines, 0);
+  return finish(std::move(mesh), face_lines, 0, corner_halfedges);
 }
 
 // ---------------------------------------------------------------- OBJ
@@ -644,7 +647,8 @@ bool parse_obj_corner(std::string_view t, long long& v) {
   return parse_int(vn, dummy);  // v//vn or v/vt/vn
 }
 
-Result<Mesh_buffers> read_obj(std::string_view text) {
+Result<Mesh_buffers> read_obj(std::string_view text,
+                              std::vector<std::uint32_t>* corner_halfedges) {
   Line_reader in(text);
   std::vector<std::string_view> tok;
   int line = 0;
@@ -747,7 +751,7 @@ Result<Mesh_buffers> read_obj(std::string_view text) {
       return parse_fail(line, "unknown OBJ statement " + quoted(k));
     }
   }
-  return finish(std::move(mesh), face_lines, 1);
+  return finish(std::move(mesh), face_lines, 1, corner_halfedges);
 }
 
 // ---------------------------------------------------------------- writing
@@ -933,9 +937,11 @@ class Chunk_writer {
 
 }  // namespace
 
-Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format) {
+Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format,
+                               std::vector<std::uint32_t>* corner_halfedges) {
   try {
-    return format == Mesh_format::off ? read_off(text) : read_obj(text);
+    return format == Mesh_format::off ? read_off(text, corner_halfedges)
+                                      : read_obj(text, corner_halfedges);
   } catch (const std::bad_alloc&) {
     Result<Mesh_buffers> r;
     r.status = Status::error(Status_code::too_large,

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "mesh_types.h"
 
@@ -19,7 +21,11 @@ enum class Mesh_format { off, obj };
 /// Errors name the problem and, where it applies, the 1-based line.
 /// Syntax errors are parse_error; index, face-size and manifold problems are
 /// invalid_mesh. Vertices no face uses are dropped, as build_mesh drops them.
-Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format);
+/// With `corner_halfedges`, also each corner's halfedge as the checks
+/// number it (mesh_check.h), for build_checked_mesh.
+Result<Mesh_buffers> read_mesh(
+    std::string_view text, Mesh_format format,
+    std::vector<std::uint32_t>* corner_halfedges = nullptr);
 
 /// Whether write_mesh can write `mesh` so that read_mesh takes it back:
 /// positions in threes and finite, face sizes that add up to the indices,
