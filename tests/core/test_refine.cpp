@@ -374,5 +374,97 @@ TEST(FastDualHost, TablesEqualCgalsLevelByLevel) {
   }
 }
 
+/// Rule sets on the dqq host: the preset, and one whose weights differ by
+/// corner and whose border rule is asymmetric.
+std::vector<Custom_rules> dqq_rules() {
+  Custom_rules odd = custom_rules_preset("doo-sabin", 64);
+  for (auto& w : odd.corner) {
+    w[0] -= 0.05;
+    w[1] += 0.05;
+  }
+  odd.border_corner = {0.6, 0.4};
+  return {custom_rules_preset("doo-sabin", 64), odd};
+}
+
+TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnEveryFixture) {
+  for (const char* f : kAnyFaces) {
+    const Mesh_buffers in = fixture_buffers(f);
+    for (int levels = 1; levels <= 3; ++levels) {
+      Subdivide_options o;
+      o.scheme = "doo-sabin";
+      o.levels = levels;
+      expect_same_run(in, o,
+                      "doo-sabin x" + std::to_string(levels) + " on " + f);
+      o.scheme = "custom";
+      for (const Custom_rules& rules : dqq_rules()) {
+        o.custom = rules;
+        expect_same_run(in, o,
+                        "custom dqq x" + std::to_string(levels) + " on " + f);
+      }
+    }
+  }
+}
+
+TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnCgalsMeshes) {
+  for (const char* f : {"holes.off", "fandisk.off", "mannequin-devil.off",
+                        "cube_quad.off", "torus_quad.off"}) {
+    std::ifstream file(
+        std::string(FIXTURES_DIR) + "/../../public/meshes/cgal/" + f,
+        std::ios::binary);
+    ASSERT_TRUE(file.good()) << f << " missing: run node scripts/setup.mjs";
+    std::stringstream text;
+    text << file.rdbuf();
+    const Result<Mesh_buffers> in = read_mesh(text.str(), Mesh_format::off);
+    ASSERT_TRUE(in.ok()) << f;
+    for (int levels = 1; levels <= 2; ++levels) {
+      Subdivide_options o;
+      o.scheme = "doo-sabin";
+      o.levels = levels;
+      expect_same_run(in.value, o,
+                      "doo-sabin x" + std::to_string(levels) + " on " + f);
+    }
+  }
+}
+
+TEST(FastDualHost, LevelByLevelEqualsOneRun) {
+  // A level-2 mesh subdivided once more from start_level 2: level 0 from
+  // the buffers of a DQQ level (mixed degrees, ears on the open grid).
+  for (const char* f :
+       {"rhombicuboctahedron.off", "mixed-open.off", "grid-open.off"}) {
+    Subdivide_options o;
+    o.scheme = "doo-sabin";
+    o.levels = 2;
+    Mesh_buffers level2 = subdivide_mesh(fixture_buffers(f), o).value;
+    o.levels = 1;
+    o.start_level = 2;
+    expect_same_run(level2, o, std::string("doo-sabin from level 2 of ") + f);
+  }
+}
+
+TEST(FastDualHost, CustomTablesThatStopShortAreRefusedAsOnCgalsHosts) {
+  // Degrees 3-4 only. The cube's levels have triangles and quads; the
+  // mixed fixture has a pentagon at level 0; the icosahedron's level 1 has
+  // a pentagon per vertex (its V-faces), refused before step 2.
+  Subdivide_options o;
+  o.scheme = "custom";
+  o.custom = custom_rules_preset("doo-sabin", 4);
+  o.levels = 2;
+  EXPECT_TRUE(subdivide_mesh(fixture_buffers("cube.off"), o).ok());
+  for (const char* f : {"mixed-open.off", "icosahedron.off"}) {
+    const Result<Mesh_buffers> fast = subdivide_mesh(fixture_buffers(f), o);
+    ASSERT_FALSE(fast.ok()) << f;
+    EXPECT_EQ(fast.status.code, Status_code::invalid_argument) << f;
+    EXPECT_EQ(fast.status.message,
+              "custom rules: the corner rule has no weights for faces of "
+              "degree 5 (the table covers degrees 3 to 4)")
+        << f;
+    Subdivide_options c = o;
+    c.cgal_hosts = true;
+    EXPECT_EQ(subdivide_mesh(fixture_buffers(f), c).status.message,
+              fast.status.message)
+        << f;
+  }
+}
+
 }  // namespace
 }  // namespace subdivlab
