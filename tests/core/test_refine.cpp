@@ -405,6 +405,27 @@ TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnEveryFixture) {
   }
 }
 
+TEST(FastDualHost, AClosedAndAnOpenComponentTogetherTakeTheBorderHost) {
+  // CGAL's route picks its host by CGAL::is_closed on the whole mesh: the
+  // cube beside the open grid is refined by the border host too.
+  Mesh_buffers in = fixture_buffers("cube.off");
+  const Mesh_buffers grid = fixture_buffers("grid-open.off");
+  const auto shift = static_cast<std::uint32_t>(in.vertex_count());
+  in.positions.insert(in.positions.end(), grid.positions.begin(),
+                      grid.positions.end());
+  in.face_sizes.insert(in.face_sizes.end(), grid.face_sizes.begin(),
+                       grid.face_sizes.end());
+  for (std::uint32_t v : grid.face_indices)
+    in.face_indices.push_back(v + shift);
+  for (int levels = 1; levels <= 3; ++levels) {
+    Subdivide_options o;
+    o.scheme = "doo-sabin";
+    o.levels = levels;
+    expect_same_run(in, o,
+                    "doo-sabin x" + std::to_string(levels) + " on cube + grid");
+  }
+}
+
 TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnCgalsMeshes) {
   for (const char* f : {"holes.off", "fandisk.off", "mannequin-devil.off",
                         "cube_quad.off", "torus_quad.off"}) {
