@@ -141,6 +141,8 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   removed_edge[E - 1] = 1;
   removed_face[F + H] = 1;
   // Corners, vertex by vertex.
+  size_to(s.rank, V);
+  std::uint32_t* valence = s.rank.data();
   std::uint32_t o = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
     const std::uint32_t first = vh[v];
@@ -149,6 +151,7 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
       ++n;
       x = next[x] ^ 1;
     } while (x != first);
+    valence[v] = n;
     for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
       const std::uint32_t slot = V + o + j;
       cv[x] = slot < H ? slot : V + H - 1 - slot;
@@ -184,13 +187,8 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   for (std::uint32_t e = 0; e < E; ++e) offsets[face(F + H + 1 + e) + 1] = 4;
   o = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
-    std::uint32_t n = 0, x = vh[v];
-    do {
-      ++n;
-      x = next[x] ^ 1;
-    } while (x != vh[v]);
-    offsets[face(F + o) + 1] = n;
-    o += n;
+    offsets[face(F + o) + 1] = valence[v];
+    o += valence[v];
   }
   sum_offsets(c);
   size_to(c.face_vertices, 4 * std::size_t{H});
@@ -230,11 +228,8 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   }
   o = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
-    std::uint32_t n = 0, x = vh[v];
-    do {
-      ++n;
-      x = next[x] ^ 1;
-    } while (x != vh[v]);
+    const std::uint32_t n = valence[v];
+    std::uint32_t x = vh[v];
     const std::uint32_t out = offsets[face(F + o)];
     for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
       fv[out + n - 1 - j] = cv[x];
@@ -426,7 +421,8 @@ double dual_scratch_bytes(double vertices, double edges, double faces,
   if (border)
     bytes += 4 * edges;  // ranks
   else
-    bytes += (6 * edges + 1) + (faces + 3 * edges + 1) +  // removed flags
+    bytes += 4 * vertices +                               // valences
+             (6 * edges + 1) + (faces + 3 * edges + 1) +  // removed flags
              4 * (2 * edges + 1) + 4 * (2 * edges - vertices + 1);  // moves
   return bytes;
 }

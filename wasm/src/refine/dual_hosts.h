@@ -30,7 +30,8 @@ struct Dual_scratch {
   /// Closed: each corner's cut edge before the garbage is collected.
   /// Open: the F-face halfedge into each corner's vertex.
   std::vector<std::uint32_t> edge_of;
-  std::vector<std::uint32_t> rank;   ///< open: rank of each interior edge
+  /// Open: rank of each interior edge; closed: valence of each vertex.
+  std::vector<std::uint32_t> rank;
   std::vector<std::uint32_t> moved;  ///< closed: slots collect_garbage moves
   std::vector<std::uint8_t> removed;
 };
