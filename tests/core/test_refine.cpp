@@ -1,7 +1,8 @@
 // The fast refinement hosts (wasm/src/refine) against CGAL's: the same
 // numbering of vertices and faces, the same face corners in the same order,
 // and the same points to 1e-12 of the mesh's size, at levels 1-3 of every
-// fixture, closed and open, for each primal scheme and its custom twin.
+// fixture, closed and open, for each primal scheme, Doo-Sabin and their
+// custom twins.
 
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Subdivision_method_3/internal/subdivision_hosts_impl_3.h>
@@ -16,12 +17,16 @@
 #include <string>
 
 #include "core/custom_rules.h"
+#include "core/dqq_border_3.h"
 #include "core/linear_masks_3.h"
 #include "core/mesh_build.h"
 #include "core/mesh_check.h"
 #include "core/mesh_io.h"
 #include "core/subdivide.h"
 #include "core/table_masks_3.h"
+#include "refine/dual_hosts.h"
+#include "refine/dual_masks.h"
+#include "refine/dual_points.h"
 #include "refine/level_convert.h"
 #include "refine/primal_hosts.h"
 #include "refine/primal_masks.h"
@@ -288,6 +293,198 @@ TEST(FastPrimalHosts,
             "table covers valences 3 to 4)");
   o.cgal_hosts = true;
   EXPECT_EQ(subdivide_mesh(prism, o).status.message, r.status.message);
+}
+
+// ---------------------------------------------------------------------------
+// The DQQ host (Doo-Sabin): closed meshes against CGAL's DQQ_1step, open
+// ones against dqq_border_3.h, through subdivide_mesh's two routes.
+
+TEST(FastDualHost, VertexHalfedgesAreTheOnesAddFaceLeaves) {
+  for (const char* f : kAnyFaces) {
+    const Mesh m = load(f, false);
+    refine::Level l = refine::level_from_mesh(m);
+    refine::add_face_vertex_halfedges(l);
+    for (Mesh::Vertex_index v : m.vertices())
+      ASSERT_EQ(l.vertex_halfedge[v.idx()], m.halfedge(v).idx())
+          << f << ", vertex " << v.idx();
+  }
+}
+
+/// Levels 1..3 of the DQQ host equal CGAL's route (DQQ_1step and
+/// collect_garbage closed, DQQ_border_1step open), tables included:
+/// halfedge targets and each vertex's halfedge, which the next step reads.
+void expect_cgal_dqq_levels(const Custom_rules* rules, const Mesh& mesh,
+                            const std::string& what) {
+  Mesh reference = mesh;
+  refine::Level level = refine::level_from_mesh(reference);
+  refine::add_face_vertex_halfedges(level);
+  const refine::Dual_mask_lookup mask =
+      refine::dual_mask(rules != nullptr ? "custom" : "doo-sabin",
+                        rules != nullptr ? *rules : Custom_rules());
+  ASSERT_TRUE(mask.ok) << what;
+  refine::Dual_scratch scratch;
+  for (int k = 1; k <= 3; ++k) {
+    const bool closed = CGAL::is_closed(reference);
+    if (rules != nullptr)
+      custom_subdivision_step(reference, *rules, 0);
+    else if (closed)
+      SM3::DooSabin_subdivision(reference,
+                                CGAL::parameters::number_of_iterations(1));
+    else
+      DooSabin_border_subdivision(reference,
+                                  CGAL::parameters::number_of_iterations(1));
+    reference.collect_garbage();
+    const Mesh_buffers expected = to_buffers(reference);
+    refine::Level child;
+    ASSERT_EQ(refine::dual_uncovered_degree(level, mask.mask), 0u);
+    refine::refine_dqq_topology(level, scratch, child, false);
+    refine::refine_dual_points(level, mask.mask, scratch, child);
+    const std::string at = what + ", level " + std::to_string(k);
+    ASSERT_EQ(child.edge_count, reference.number_of_edges()) << at;
+    ASSERT_EQ(child.border_edge_count * 2 == 0, closed) << at;
+    for (Mesh::Halfedge_index h : reference.halfedges()) {
+      ASSERT_EQ(child.halfedge_target[h.idx()], reference.target(h).idx())
+          << at << ", halfedge " << h.idx();
+      ASSERT_EQ(child.halfedge_corner[h.idx()] == refine::kNone,
+                reference.is_border(h))
+          << at << ", halfedge " << h.idx();
+    }
+    for (Mesh::Vertex_index v : reference.vertices())
+      ASSERT_EQ(child.vertex_halfedge[v.idx()], reference.halfedge(v).idx())
+          << at << ", vertex " << v.idx();
+    level = child;
+    const Mesh_buffers got = refine::level_to_buffers(std::move(child));
+    ASSERT_EQ(got.face_sizes, expected.face_sizes) << at;
+    ASSERT_EQ(got.face_indices, expected.face_indices) << at;
+    ASSERT_EQ(got.positions.size(), expected.positions.size()) << at;
+    const double tol = 1e-12 * size_of(expected.positions);
+    for (std::size_t i = 0; i < expected.positions.size(); ++i)
+      ASSERT_NEAR(got.positions[i], expected.positions[i], tol)
+          << at << ", vertex " << i / 3;
+  }
+}
+
+TEST(FastDualHost, TablesEqualCgalsLevelByLevel) {
+  const Custom_rules preset = custom_rules_preset("doo-sabin", 64);
+  for (const char* f : kAnyFaces) {
+    expect_cgal_dqq_levels(nullptr, load(f, false),
+                           std::string("doo-sabin on ") + f);
+    expect_cgal_dqq_levels(&preset, load(f, false),
+                           std::string("custom dqq on ") + f);
+  }
+}
+
+/// Rule sets on the dqq host: the preset, and one whose weights differ by
+/// corner and whose border rule is asymmetric.
+std::vector<Custom_rules> dqq_rules() {
+  Custom_rules odd = custom_rules_preset("doo-sabin", 64);
+  for (auto& w : odd.corner) {
+    w[0] -= 0.05;
+    w[1] += 0.05;
+  }
+  odd.border_corner = {0.6, 0.4};
+  return {custom_rules_preset("doo-sabin", 64), odd};
+}
+
+TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnEveryFixture) {
+  for (const char* f : kAnyFaces) {
+    const Mesh_buffers in = fixture_buffers(f);
+    for (int levels = 1; levels <= 3; ++levels) {
+      Subdivide_options o;
+      o.scheme = "doo-sabin";
+      o.levels = levels;
+      expect_same_run(in, o,
+                      "doo-sabin x" + std::to_string(levels) + " on " + f);
+      o.scheme = "custom";
+      for (const Custom_rules& rules : dqq_rules()) {
+        o.custom = rules;
+        expect_same_run(in, o,
+                        "custom dqq x" + std::to_string(levels) + " on " + f);
+      }
+    }
+  }
+}
+
+TEST(FastDualHost, AClosedAndAnOpenComponentTogetherTakeTheBorderHost) {
+  // CGAL's route picks its host by CGAL::is_closed on the whole mesh: the
+  // cube beside the open grid is refined by the border host too.
+  Mesh_buffers in = fixture_buffers("cube.off");
+  const Mesh_buffers grid = fixture_buffers("grid-open.off");
+  const auto shift = static_cast<std::uint32_t>(in.vertex_count());
+  in.positions.insert(in.positions.end(), grid.positions.begin(),
+                      grid.positions.end());
+  in.face_sizes.insert(in.face_sizes.end(), grid.face_sizes.begin(),
+                       grid.face_sizes.end());
+  for (std::uint32_t v : grid.face_indices)
+    in.face_indices.push_back(v + shift);
+  for (int levels = 1; levels <= 3; ++levels) {
+    Subdivide_options o;
+    o.scheme = "doo-sabin";
+    o.levels = levels;
+    expect_same_run(in, o,
+                    "doo-sabin x" + std::to_string(levels) + " on cube + grid");
+  }
+}
+
+TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnCgalsMeshes) {
+  for (const char* f : {"holes.off", "fandisk.off", "mannequin-devil.off",
+                        "cube_quad.off", "torus_quad.off"}) {
+    std::ifstream file(
+        std::string(FIXTURES_DIR) + "/../../public/meshes/cgal/" + f,
+        std::ios::binary);
+    ASSERT_TRUE(file.good()) << f << " missing: run node scripts/setup.mjs";
+    std::stringstream text;
+    text << file.rdbuf();
+    const Result<Mesh_buffers> in = read_mesh(text.str(), Mesh_format::off);
+    ASSERT_TRUE(in.ok()) << f;
+    for (int levels = 1; levels <= 2; ++levels) {
+      Subdivide_options o;
+      o.scheme = "doo-sabin";
+      o.levels = levels;
+      expect_same_run(in.value, o,
+                      "doo-sabin x" + std::to_string(levels) + " on " + f);
+    }
+  }
+}
+
+TEST(FastDualHost, LevelByLevelEqualsOneRun) {
+  // A level-2 mesh subdivided once more from start_level 2: level 0 from
+  // the buffers of a DQQ level (mixed degrees, ears on the open grid).
+  for (const char* f :
+       {"rhombicuboctahedron.off", "mixed-open.off", "grid-open.off"}) {
+    Subdivide_options o;
+    o.scheme = "doo-sabin";
+    o.levels = 2;
+    Mesh_buffers level2 = subdivide_mesh(fixture_buffers(f), o).value;
+    o.levels = 1;
+    o.start_level = 2;
+    expect_same_run(level2, o, std::string("doo-sabin from level 2 of ") + f);
+  }
+}
+
+TEST(FastDualHost, CustomTablesThatStopShortAreRefusedAsOnCgalsHosts) {
+  // Degrees 3-4 only. The cube's levels have triangles and quads; the
+  // mixed fixture has a pentagon at level 0; the icosahedron's level 1 has
+  // a pentagon per vertex (its V-faces), refused before step 2.
+  Subdivide_options o;
+  o.scheme = "custom";
+  o.custom = custom_rules_preset("doo-sabin", 4);
+  o.levels = 2;
+  EXPECT_TRUE(subdivide_mesh(fixture_buffers("cube.off"), o).ok());
+  for (const char* f : {"mixed-open.off", "icosahedron.off"}) {
+    const Result<Mesh_buffers> fast = subdivide_mesh(fixture_buffers(f), o);
+    ASSERT_FALSE(fast.ok()) << f;
+    EXPECT_EQ(fast.status.code, Status_code::invalid_argument) << f;
+    EXPECT_EQ(fast.status.message,
+              "custom rules: the corner rule has no weights for faces of "
+              "degree 5 (the table covers degrees 3 to 4)")
+        << f;
+    Subdivide_options c = o;
+    c.cgal_hosts = true;
+    EXPECT_EQ(subdivide_mesh(fixture_buffers(f), c).status.message,
+              fast.status.message)
+        << f;
+  }
 }
 
 }  // namespace

@@ -284,7 +284,7 @@ describe("the core's scheme table", () => {
     expect(hosts.map((h) => [h.name, h.needsTriangles, h.keepsControlEdges, h.fast, h.sizeModel])).toEqual([
       ['pqq', false, true, true, 'catmull-clark'],
       ['ptq', true, true, true, 'loop'],
-      ['dqq', false, false, false, 'doo-sabin'],
+      ['dqq', false, false, true, 'doo-sabin'],
       ['sqrt3', true, false, false, 'sqrt3'],
       ['pqt', false, true, false, 'quad-triangle'],
     ]);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dqq_border_3.h"
+#include "refine/dual_masks.h"
 #include "refine/primal_masks.h"
 #include "table_masks_3.h"
 
@@ -107,11 +108,7 @@ Status check_custom_rules_cover(const Custom_rules& r, const Mesh& mesh) {
     const std::size_t last = first + r.corner.size() - 1;
     for (Mesh::Face_index f : mesh.faces()) {
       const std::size_t k = mesh.degree(f);
-      if (k < first || k > last)
-        return refuse("the corner rule has no weights for faces of degree " +
-                      std::to_string(k) + " (the table covers degrees " +
-                      std::to_string(first) + " to " + std::to_string(last) +
-                      ")");
+      if (k < first || k > last) return custom_rules_degree_refusal(r, k);
     }
     return Status::success();
   }
@@ -130,6 +127,14 @@ Status custom_rules_valence_refusal(const Custom_rules& r, std::size_t n) {
   const std::size_t last = first + r.vertex.size() - 1;
   return refuse("the vertex rule has no weights for valence " +
                 std::to_string(n) + " (the table covers valences " +
+                std::to_string(first) + " to " + std::to_string(last) + ")");
+}
+
+Status custom_rules_degree_refusal(const Custom_rules& r, std::size_t k) {
+  const std::size_t first = static_cast<std::size_t>(r.first_degree);
+  const std::size_t last = first + r.corner.size() - 1;
+  return refuse("the corner rule has no weights for faces of degree " +
+                std::to_string(k) + " (the table covers degrees " +
                 std::to_string(first) + " to " + std::to_string(last) + ")");
 }
 
@@ -165,21 +170,11 @@ Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
     r.edge_end = 3.0 / 8.0;
     r.edge_wing = 1.0 / 8.0;
   } else if (name == "doo-sabin") {
-    // DooSabin_mask_3: (5/k + 1)/4 at the corner, (3 + 2 cos(2 pi j / k)) /
-    // (4k).
+    // The weights of the fast host's mask (refine/dual_masks.h).
     r.host = "dqq";
     r.first_degree = 3;
-    for (int k = 3; k <= max_valence; ++k) {
-      std::vector<double> w(k);
-      for (int j = 0; j < k; ++j)
-        w[j] = (k == 4) ? (j == 0   ? 9.0
-                           : j == 2 ? 1.0
-                                    : 3.0) /
-                              16.0
-               : j == 0 ? (5.0 / k + 1) / 4
-                        : (3 + 2 * std::cos(2 * j * pi / k)) / k / 4;
-      r.corner.push_back(w);
-    }
+    for (int k = 3; k <= max_valence; ++k)
+      r.corner.push_back(refine::doo_sabin_corner_weights(k));
     r.border_corner = {0.75, 0.25};
   } else if (name == "sqrt3") {
     // Sqrt3_mask_3: a(n) = (4 - 2 cos(2 pi / n)) / 9; border 1/27 (1, 16, 10)

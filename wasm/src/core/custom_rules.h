@@ -75,6 +75,10 @@ Status check_custom_rules_cover(const Custom_rules& rules, const Mesh& mesh);
 /// valence n that the vertex table does not cover.
 Status custom_rules_valence_refusal(const Custom_rules& rules, std::size_t n);
 
+/// The refusal of check_custom_rules_cover (dqq) for a face of degree k
+/// that the corner table does not cover.
+Status custom_rules_degree_refusal(const Custom_rules& rules, std::size_t k);
+
 /// The built-in rule sets, as tables for valences / degrees 3..max_valence:
 /// "catmull-clark" (pqq), "loop" (ptq), "doo-sabin" (dqq), "sqrt3" (sqrt3),
 /// "improved-loop" (ptq; CGAL's Customized_subdivision example: Warren's

@@ -12,7 +12,7 @@ const std::vector<Host_info>& host_table() {
   static const std::vector<Host_info> hosts = {
       {"pqq", false, true, true, "catmull-clark", "PQQ"},
       {"ptq", true, true, true, "loop", "PTQ"},
-      {"dqq", false, false, false, "doo-sabin", "DQQ"},
+      {"dqq", false, false, true, "doo-sabin", "DQQ"},
       {"sqrt3", true, false, false, "sqrt3", "\u221a3"},
       {"pqt", false, true, false, "quad-triangle", "PQT"},
   };

@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "refine/dual_hosts.h"
 #include "refine/level_convert.h"
 #include "refine/primal_points.h"
 #include "render_buffers.h"
@@ -322,14 +323,21 @@ double fast_step_peak(const std::string& scheme, const Counts& c,
                       const Counts& n, const Caps& caps, bool first, bool last,
                       double marks, double base) {
   const bool marked = marks > 0;
+  // DQQ levels keep their face offsets (mixed degrees) and, but for the
+  // last, their vertices' halfedges.
+  const bool dual = scheme == "doo-sabin";
   const double parent =
       refine::level_bytes(c.vertices, c.edges, c.degree_sum(), marked, false) +
-      (first ? 4 * (c.faces + 1) : 0);
+      (first || dual ? 4 * (c.faces + 1) : 0) + (dual ? 4 * c.vertices : 0);
   const double child =
-      refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked, last);
-  double peak = base + parent + child +
-                refine::primal_scratch_bytes(
-                    c.vertices, scheme == "catmull-clark", c.border_edges > 0);
+      refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked, last) +
+      (dual ? 4 * (n.faces + 1) + (last ? 0 : 4 * n.vertices) : 0);
+  const double scratch =
+      dual ? refine::dual_scratch_bytes(c.vertices, c.edges, c.faces,
+                                        c.border_edges > 0)
+           : refine::primal_scratch_bytes(c.vertices, scheme == "catmull-clark",
+                                          c.border_edges > 0);
+  double peak = base + parent + child + scratch;
   // Level 0 comes from the buffers (check_buffers' temporaries: 32 bytes
   // a corner, 8 a vertex, 4 a face; then the level beside the corners'
   // halfedges and a vertex numbering) or, when it had to be triangulated,

@@ -1,7 +1,7 @@
 // The subdivision driver: options checked, the run's size predicted
 // (size_model.h), then one step at a time, each preceded by a size check,
 // on one of two routes:
-//   fast hosts (refine/) for the PQQ and PTQ schemes (scheme_table.h):
+//   fast hosts (refine/) for the PQQ, PTQ and DQQ schemes (scheme_table.h):
 //     level 0 taken from the checked buffers, or from CGAL's mesh when
 //     polygons must be triangulated first; the levels' tables derived in
 //     CGAL's numbering; the last level's arrays moved into the result.
@@ -37,6 +37,9 @@
 #include "mesh_build.h"
 #include "mesh_check.h"
 #include "quad_triangle_3.h"
+#include "refine/dual_hosts.h"
+#include "refine/dual_masks.h"
+#include "refine/dual_points.h"
 #include "refine/level_convert.h"
 #include "refine/primal_hosts.h"
 #include "refine/primal_masks.h"
@@ -346,6 +349,40 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
   return Status::success();
 }
 
+/// run_primal_steps for the DQQ host (`mask` from refine::dual_mask).
+Status run_dual_steps(refine::Level& parent, Counts counts,
+                      const refine::Dual_mask& mask,
+                      const Subdivide_options& options, const Mesh_buffers& in,
+                      double input, Mesh_buffers& out, int& level) {
+  const Caps mesh_caps = Caps::exact(counts);
+  refine::add_face_vertex_halfedges(parent);
+  refine::Level child;
+  refine::Dual_scratch scratch;
+  for (int i = 0; i < options.levels; ++i) {
+    level = options.start_level + i + 1;
+    const bool last = i + 1 == options.levels;
+    const Step_need need =
+        step_need(options, counts, mesh_caps, options.start_level + i, i == 0,
+                  last, 0, input);
+    Status s = check_step(options.scheme, need, options.start_level + i,
+                          options.memory_limit_bytes);
+    if (!s.ok()) return s;
+    const std::uint32_t uncovered = refine::dual_uncovered_degree(parent, mask);
+    if (uncovered != 0)
+      return custom_rules_degree_refusal(options.custom, uncovered);
+    refine::refine_dqq_topology(parent, scratch, child, last);
+    refine::refine_dual_points(parent, mask, scratch, child);
+    for (double x : child.positions)
+      if (!std::isfinite(x)) return overflow(in, options.scheme, level);
+    std::swap(parent, child);
+    counts = need.after;
+  }
+  child = refine::Level();
+  scratch = refine::Dual_scratch();
+  out = refine::level_to_buffers(std::move(parent));
+  return Status::success();
+}
+
 }  // namespace
 
 /// Runs ONE step of `options.scheme` on `mesh`. `level_index` counts the
@@ -463,7 +500,10 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
         buffers_bytes(static_cast<double>(in.vertex_count()),
                       static_cast<double>(in.face_count()),
                       static_cast<double>(in.face_indices.size()));
-    if (fast.ok && runs_on_fast_host(options) && options.levels > 0) {
+    const refine::Dual_mask_lookup dual =
+        refine::dual_mask(options.scheme, options.custom);
+    if ((fast.ok || dual.ok) && runs_on_fast_host(options) &&
+        options.levels > 0) {
       refine::Level level0;
       Counts counts;
       double marks = 0;
@@ -471,9 +511,12 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       // Refuse at once a run whose later level would not fit.
       Run_prediction run;
       if (s.ok()) s = predict_run(options, counts, input, marks, true, run);
-      if (s.ok())
+      if (s.ok() && fast.ok)
         s = run_primal_steps(level0, counts, marks, fast.mask, options, in,
                              input, result.value, level);
+      else if (s.ok())
+        s = run_dual_steps(level0, counts, dual.mask, options, in, input,
+                           result.value, level);
       if (!s.ok()) result = Result<Mesh_buffers>{s, {}};
       return result;
     }

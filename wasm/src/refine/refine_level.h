@@ -20,6 +20,9 @@
 //   halfedge_corner  where a halfedge sits in face_halfedges (kNone on the
 //                    border): its face, and next/prev around the face, so
 //                    vertex rings (limit masks) circulate without a search
+//   vertex_halfedge  the DQQ host's only: Surface_mesh::halfedge(v), a
+//                    halfedge into v (the border one on the border), where
+//                    CGAL's hosts start circulating around v
 //   edge_marks       per-edge data carried to both halves of a split edge
 //                    (control edges today; crease sharpness is its sibling)
 #pragma once
@@ -49,6 +52,9 @@ struct Level {
   std::vector<std::uint32_t> face_halfedges;
   std::vector<std::uint32_t> halfedge_target;  ///< 2 * edge_count
   std::vector<std::uint32_t> halfedge_corner;  ///< 2 * edge_count, or kNone
+  /// One per vertex on levels the DQQ host refines (dual_hosts.h); else
+  /// empty.
+  std::vector<std::uint32_t> vertex_halfedge;
   /// Edges with a border halfedge; 0 on a closed mesh.
   std::uint32_t border_edge_count = 0;
   /// One byte per edge (1 = a control edge); empty when not tracked.

@@ -1,0 +1,451 @@
+// The DQQ host's numbering. Corners: x a parent halfedge not on the border,
+// the corner of face(x) at target(x); c_0 = halfedge(v) and c_j+1 =
+// opposite(next(c_j)) circulate around v (halfedges_around_target); o_v is
+// the number of corners of the vertices before v, n_v its valence. F-face
+// f, E-face e, V-face v: the faces Doo-Sabin builds per face, edge, vertex.
+//
+// Closed: CGAL 5.5's DQQ_1step (Subdivision_method_3/internal/
+// subdivision_hosts_impl_3.h), then collect_garbage (subdivide.cpp's
+// collect_removed). Slots before the garbage is collected:
+//   vertices  per vertex, per corner c_j: insert_vertex adds V + o_v + j
+//             (the corner's point) and spoke edge E + 2 o_v + j; then, for
+//             c_n-1, c_0, ..., c_n-2, split_face cuts the corner off its
+//             face: cut edge E + 2 o_v + n_v + (j + 1) mod n_v, even
+//             halfedge c_j -> c_j+1, and triangle F + o_v + (j + 1) mod n_v.
+//   edges     per old edge e in order: split_face twice (the F-face edges
+//             along 2e, then 2e + 1: even halfedge corner(prev x) ->
+//             corner(x)), join_face frees edge e and a face, which the next
+//             edge's first split reuses (the free lists are LIFO). So the
+//             edge along x is e - 1 (x = 2e, e > 0), 5E (x = 0) or
+//             5E + 1 + e (x = 2e + 1); edge E - 1 stays free. E-face e
+//             lands in F + 2E + 1 + e; F + 2E stays free.
+//   removal   remove_center_vertex removes the old vertices, the spokes and
+//             every cut triangle but the first (F + o_v, the V-face, which
+//             starts at its halfedge into c_n-1 and runs c_n-1, ..., c_0).
+// collect_garbage then fills the free slots from the front with the last
+// used slots from the back (Surface_mesh's two-pointer swap); the
+// halfedges of an edge move with it, parity kept. Vertices: V + k stays
+// below 2E, else goes to 2E - 1 - k. F-face f keeps f and starts at the
+// corner of its halfedge of highest edge index (the last join_face sets
+// it); E-face e runs corner(2e), corner(prev 2e), corner(2e + 1),
+// corner(prev(2e + 1)). Each new vertex's halfedge(v) is its V-face's
+// halfedge into it.
+//
+// Open: DQQ_border_1step builds flat arrays, then add_face in order, so the
+// numbering is add_face's: vertices as the host creates them (border
+// corners first: per halfedge x in order whose opposite is on the border,
+// corner(x), then the corner at its source, which is prev(x)'s or, for an
+// ear, its second; then every other corner in halfedge order); faces
+// F-faces, E-faces (interior edges), V-faces (interior vertices from
+// halfedge(v), border vertices of 3 or more corners from their border
+// halfedge, both reverse circulation); each face's new edges in corner
+// order with the even halfedge in the face: an F-face's edges are all new,
+// an E-face's second and fourth (the V-face's), a border V-face's last (on
+// the border). halfedge(v): see add_face_vertex_halfedges.
+
+#include "dual_hosts.h"
+
+#include <algorithm>
+
+#include "primal_hosts.h"
+
+namespace subdivlab {
+namespace refine {
+namespace {
+
+/// next/prev of every non-border halfedge, from the faces.
+void link_faces(const Level& p, Dual_scratch& s) {
+  const std::size_t H = 2 * std::size_t{p.edge_count};
+  size_to(s.next, H);
+  size_to(s.prev, H);
+  const std::uint32_t* fh = p.face_halfedges.data();
+  for (std::uint32_t f = 0; f < p.face_count; ++f) {
+    const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t x = fh[i], y = fh[i + 1 == end ? begin : i + 1];
+      s.next[x] = y;
+      s.prev[y] = x;
+    }
+  }
+}
+
+/// halfedge_target, halfedge_corner and the border count from the faces.
+void link_halfedges(Level& c) {
+  const std::size_t H = 2 * std::size_t{c.edge_count};
+  size_to(c.halfedge_target, H);
+  size_to(c.halfedge_corner, H);
+  std::fill(c.halfedge_corner.begin(), c.halfedge_corner.end(), kNone);
+  std::uint32_t* t = c.halfedge_target.data();
+  std::uint32_t* corner = c.halfedge_corner.data();
+  const std::uint32_t* fv = c.face_vertices.data();
+  const std::uint32_t* fh = c.face_halfedges.data();
+  for (std::uint32_t f = 0; f < c.face_count; ++f) {
+    const std::uint32_t begin = c.face_offsets[f], end = c.face_offsets[f + 1];
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t h = fh[i];
+      t[h] = fv[i];
+      t[h ^ 1] = fv[i == begin ? end - 1 : i - 1];
+      corner[h] = i;
+    }
+  }
+  c.border_edge_count = c.edge_count * 2 - c.corner_count();
+}
+
+/// Surface_mesh::collect_garbage's moves: slots at or past `kept` (the
+/// count after) that hold an element go, from the back, to the free slots
+/// below `kept`, from the front. moved[p - kept] is slot p's new index.
+void collect(std::uint8_t* removed, std::size_t slots, std::size_t kept,
+             std::vector<std::uint32_t>& moved) {
+  size_to(moved, slots - kept);
+  std::size_t i0 = 0, i1 = slots - 1;
+  while (true) {
+    while (removed[i0] == 0 && i0 < i1) ++i0;
+    while (removed[i1] != 0 && i0 < i1) --i1;
+    if (i0 >= i1) break;
+    moved[i1 - kept] = static_cast<std::uint32_t>(i0);
+    removed[i0] = 0;
+    removed[i1] = 1;
+  }
+}
+
+void set_offsets(Level& c, std::uint32_t faces) {
+  c.face_count = faces;
+  c.uniform_degree = 0;
+  size_to(c.face_offsets, std::size_t{faces} + 1);
+}
+
+/// Degrees in face_offsets[f + 1] -> offsets.
+void sum_offsets(Level& c) {
+  c.face_offsets[0] = 0;
+  for (std::uint32_t f = 0; f < c.face_count; ++f)
+    c.face_offsets[f + 1] += c.face_offsets[f];
+}
+
+void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
+  const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
+  const std::uint32_t H = 2 * E;
+  link_faces(p, s);
+  const std::uint32_t* next = s.next.data();
+  const std::uint32_t* prev = s.prev.data();
+  const std::uint32_t* vh = p.vertex_halfedge.data();
+  size_to(s.corner_vertex, H);
+  size_to(s.edge_of, H);
+  std::uint32_t* cv = s.corner_vertex.data();
+  std::uint32_t* cut = s.edge_of.data();
+  const std::size_t edge_slots = 6 * std::size_t{E} + 1,
+                    face_slots = F + 3 * std::size_t{E} + 1;
+  size_to(s.removed, edge_slots + face_slots);
+  std::fill(s.removed.begin(), s.removed.end(), 0);
+  std::uint8_t* removed_edge = s.removed.data();
+  std::uint8_t* removed_face = removed_edge + edge_slots;
+  removed_edge[E - 1] = 1;
+  removed_face[F + H] = 1;
+  // Corners, vertex by vertex.
+  size_to(s.rank, V);
+  std::uint32_t* valence = s.rank.data();
+  std::uint32_t o = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    const std::uint32_t first = vh[v];
+    std::uint32_t n = 0, x = first;
+    do {
+      ++n;
+      x = next[x] ^ 1;
+    } while (x != first);
+    valence[v] = n;
+    for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
+      const std::uint32_t slot = V + o + j;
+      cv[x] = slot < H ? slot : V + H - 1 - slot;
+      cut[x] = E + 2 * o + n + (j + 1 == n ? 0 : j + 1);
+      removed_edge[E + 2 * o + j] = 1;
+      if (j > 0) removed_face[F + o + j] = 1;
+    }
+    o += n;
+  }
+  const std::uint32_t E2 = 4 * E, F2 = F + E + V;
+  std::vector<std::uint32_t> moved_faces;
+  collect(removed_face, face_slots, F2, moved_faces);
+  collect(removed_edge, edge_slots, E2, s.moved);
+  const std::uint32_t* moved = s.moved.data();
+  auto edge = [&](std::uint32_t slot) {
+    return slot < E2 ? slot : moved[slot - E2];
+  };
+  auto face = [&](std::uint32_t slot) {
+    return slot < F2 ? slot : moved_faces[slot - F2];
+  };
+  // The F-face halfedge into corner(x).
+  auto along = [&](std::uint32_t x) {
+    const std::uint32_t e = x >> 1;
+    return 2 * edge((x & 1) != 0 ? 5 * E + 1 + e : e == 0 ? 5 * E : e - 1);
+  };
+
+  c.vertex_count = H;
+  c.edge_count = E2;
+  set_offsets(c, F2);
+  std::uint32_t* offsets = c.face_offsets.data();
+  for (std::uint32_t f = 0; f < F; ++f)
+    offsets[f + 1] = p.face_end(f) - p.face_begin(f);
+  for (std::uint32_t e = 0; e < E; ++e) offsets[face(F + H + 1 + e) + 1] = 4;
+  o = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    offsets[face(F + o) + 1] = valence[v];
+    o += valence[v];
+  }
+  sum_offsets(c);
+  size_to(c.face_vertices, 4 * std::size_t{H});
+  std::uint32_t* fv = c.face_vertices.data();
+  std::uint32_t* fh = nullptr;
+  if (last) {
+    c.face_halfedges = {};
+    c.vertex_halfedge = {};
+  } else {
+    size_to(c.face_halfedges, 4 * std::size_t{H});
+    size_to(c.vertex_halfedge, H);
+    fh = c.face_halfedges.data();
+  }
+  for (std::uint32_t f = 0; f < F; ++f) {
+    const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
+    const std::uint32_t* ph = p.face_halfedges.data() + begin;
+    const std::uint32_t start = first_corner_offset(ph, k), out = offsets[f];
+    for (std::uint32_t i = 0; i < k; ++i) {
+      const std::uint32_t x = ph[start + i < k ? start + i : start + i - k];
+      fv[out + i] = cv[x];
+      if (fh != nullptr) fh[out + i] = along(x);
+    }
+  }
+  for (std::uint32_t e = 0; e < E; ++e) {
+    const std::uint32_t h0 = 2 * e, h1 = h0 + 1,
+                        out = offsets[face(F + H + 1 + e)];
+    const std::uint32_t p0 = prev[h0], p1 = prev[h1];
+    fv[out] = cv[h0];
+    fv[out + 1] = cv[p0];
+    fv[out + 2] = cv[h1];
+    fv[out + 3] = cv[p1];
+    if (fh == nullptr) continue;
+    fh[out] = 2 * edge(cut[p1]);
+    fh[out + 1] = along(h0) ^ 1;
+    fh[out + 2] = 2 * edge(cut[p0]);
+    fh[out + 3] = along(h1) ^ 1;
+  }
+  o = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    const std::uint32_t n = valence[v];
+    std::uint32_t x = vh[v];
+    const std::uint32_t out = offsets[face(F + o)];
+    for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
+      fv[out + n - 1 - j] = cv[x];
+      if (fh == nullptr) continue;
+      const std::uint32_t h = 2 * edge(cut[x]) + 1;
+      fh[out + n - 1 - j] = h;
+      c.vertex_halfedge[cv[x]] = h;
+    }
+    o += n;
+  }
+  if (last) {
+    c.halfedge_target = {};
+    c.halfedge_corner = {};
+    c.border_edge_count = 0;
+  } else {
+    link_halfedges(c);
+  }
+}
+
+void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
+  const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
+  const std::uint32_t H = 2 * E;
+  link_faces(p, s);
+  const std::uint32_t* next = s.next.data();
+  const std::uint32_t* prev = s.prev.data();
+  const std::uint32_t* vh = p.vertex_halfedge.data();
+  const std::uint32_t* pc = p.halfedge_corner.data();
+  auto border = [&](std::uint32_t x) { return pc[x] == kNone; };
+  auto ear = [&](std::uint32_t x) {
+    return border(x ^ 1) && border(next[x] ^ 1);
+  };
+  size_to(s.corner_vertex, H);
+  std::fill(s.corner_vertex.begin(), s.corner_vertex.end(), kNone);
+  std::uint32_t* cv = s.corner_vertex.data();
+  // Vertices: border corners, then the others.
+  std::uint32_t n = 0, ears = 0;
+  for (std::uint32_t x = 0; x < H; ++x) {
+    if (border(x) || !border(x ^ 1)) continue;
+    cv[x] = n++;
+    const std::uint32_t q = prev[x];
+    if (border(q ^ 1))
+      ++n, ++ears;
+    else
+      cv[q] = n++;
+  }
+  for (std::uint32_t x = 0; x < H; ++x)
+    if (!border(x) && cv[x] == kNone) cv[x] = n++;
+  c.vertex_count = n;
+  // Interior edges' ranks; V-faces' sizes.
+  size_to(s.rank, E);
+  std::uint32_t interior = 0;
+  for (std::uint32_t e = 0; e < E; ++e)
+    s.rank[e] = border(2 * e) || border(2 * e + 1) ? kNone : interior++;
+  const std::uint32_t SF = p.corner_count() + ears;
+  // The V-face of u: its corners h (reverse circulation), its size (0 if
+  // none) and whether it closes on the border.
+  auto v_face_size = [&](std::uint32_t u, bool& on_border) {
+    const std::uint32_t start = vh[u];
+    on_border = border(start);
+    std::uint32_t m = 0;
+    if (on_border) {
+      for (std::uint32_t h = prev[start ^ 1];; h = prev[h ^ 1]) {
+        ++m;
+        if (border(h ^ 1)) break;
+      }
+      return m >= 3 ? m : 0;
+    }
+    std::uint32_t h = start;
+    do {
+      ++m;
+      h = prev[h ^ 1];
+    } while (h != start);
+    return m;
+  };
+  std::uint32_t v_faces = 0, fans = 0;
+  for (std::uint32_t u = 0; u < V; ++u) {
+    bool on_border;
+    if (v_face_size(u, on_border) == 0) continue;
+    ++v_faces;
+    fans += on_border;
+  }
+  const std::uint32_t F2 = F + interior + v_faces;
+  c.edge_count = SF + 2 * interior + fans;
+  set_offsets(c, F2);
+  std::uint32_t* offsets = c.face_offsets.data();
+  for (std::uint32_t f = 0; f < F; ++f) {
+    std::uint32_t k = 0;
+    for (std::uint32_t i = p.face_begin(f); i < p.face_end(f); ++i)
+      k += 1 + ear(p.face_halfedges[i]);
+    offsets[f + 1] = k;
+  }
+  for (std::uint32_t r = 0; r < interior; ++r) offsets[F + r + 1] = 4;
+  for (std::uint32_t u = 0, i = F + interior; u < V; ++u) {
+    bool on_border;
+    const std::uint32_t m = v_face_size(u, on_border);
+    if (m != 0) offsets[++i] = m;
+  }
+  sum_offsets(c);
+  const std::size_t corners = offsets[F2];
+  size_to(c.face_vertices, corners);
+  std::uint32_t* fv = c.face_vertices.data();
+  std::uint32_t* fh = nullptr;
+  if (last) {
+    c.face_halfedges = {};
+  } else {
+    size_to(c.face_halfedges, corners);
+    fh = c.face_halfedges.data();
+    size_to(s.edge_of, H);
+  }
+  std::uint32_t* into = s.edge_of.data();
+  // F-faces: edge i of the F-faces runs from their corner i to the next.
+  for (std::uint32_t f = 0; f < F; ++f) {
+    const std::uint32_t out = offsets[f], end = offsets[f + 1];
+    std::uint32_t q = out;
+    for (std::uint32_t i = p.face_begin(f); i < p.face_end(f); ++i) {
+      const std::uint32_t x = p.face_halfedges[i];
+      if (fh != nullptr) {
+        const std::uint32_t h = 2 * (q == out ? end - 1 : q - 1);
+        fh[q] = h;
+        into[x] = h;
+      }
+      fv[q++] = cv[x];
+      if (!ear(x)) continue;
+      if (fh != nullptr) fh[q] = 2 * (q - 1);
+      fv[q++] = cv[next[x]] + 1;
+    }
+  }
+  // E-faces: their second and fourth edges are new.
+  for (std::uint32_t e = 0, out = offsets[F]; e < E; ++e) {
+    const std::uint32_t r = s.rank[e];
+    if (r == kNone) continue;
+    const std::uint32_t h0 = 2 * e, h1 = h0 + 1;
+    fv[out] = cv[h0];
+    fv[out + 1] = cv[prev[h0]];
+    fv[out + 2] = cv[h1];
+    fv[out + 3] = cv[prev[h1]];
+    if (fh != nullptr) {
+      fh[out] = 2 * (SF + 2 * r + 1);
+      fh[out + 1] = into[h0] ^ 1;
+      fh[out + 2] = 2 * (SF + 2 * r);
+      fh[out + 3] = into[h1] ^ 1;
+    }
+    out += 4;
+  }
+  // V-faces: from corner h to the next, prev(opposite(h)), along the edge
+  // an E-face added at the source of y = opposite(h).
+  auto across = [&](std::uint32_t h) {
+    const std::uint32_t y = h ^ 1;
+    return 2 * (SF + 2 * s.rank[y >> 1] + (y & 1)) + 1;
+  };
+  for (std::uint32_t u = 0, i = F + interior, fan = 0; u < V; ++u) {
+    bool on_border;
+    const std::uint32_t m = v_face_size(u, on_border);
+    if (m == 0) continue;
+    std::uint32_t q = offsets[i++];
+    const std::uint32_t start = vh[u];
+    std::uint32_t h = on_border ? prev[start ^ 1] : start;
+    for (std::uint32_t j = 0; j < m; ++j) {
+      fv[q + j] = cv[h];
+      const std::uint32_t after = prev[h ^ 1];
+      if (fh != nullptr) {
+        if (j + 1 < m)
+          fh[q + j + 1] = across(h);
+        else
+          fh[q] = on_border ? 2 * (SF + 2 * interior + fan) : across(h);
+      }
+      h = after;
+    }
+    fan += on_border;
+  }
+  if (last) {
+    c.halfedge_target = {};
+    c.halfedge_corner = {};
+    c.vertex_halfedge = {};
+    c.border_edge_count = 0;
+  } else {
+    link_halfedges(c);
+    add_face_vertex_halfedges(c);
+  }
+}
+
+}  // namespace
+
+double dual_scratch_bytes(double vertices, double edges, double faces,
+                          bool border) {
+  const double halfedges = 2 * edges;
+  // corner_vertex, next, prev, edge_of: 4 bytes a halfedge each.
+  double bytes = 4 * 4 * halfedges;
+  if (border)
+    bytes += 4 * edges;  // ranks
+  else
+    bytes += 4 * vertices +                               // valences
+             (6 * edges + 1) + (faces + 3 * edges + 1) +  // removed flags
+             4 * (2 * edges + 1) + 4 * (2 * edges - vertices + 1);  // moves
+  return bytes;
+}
+
+void add_face_vertex_halfedges(Level& l) {
+  size_to(l.vertex_halfedge, l.vertex_count);
+  std::uint32_t* vh = l.vertex_halfedge.data();
+  for (std::uint32_t f = 0; f < l.face_count; ++f)
+    for (std::uint32_t i = l.face_begin(f); i < l.face_end(f); ++i)
+      vh[l.face_vertices[i]] = l.face_halfedges[i];
+  if (l.border_edge_count == 0) return;
+  for (std::uint32_t h = 0; h < 2 * l.edge_count; ++h)
+    if (l.halfedge_corner[h] == kNone) vh[l.halfedge_target[h]] = h;
+}
+
+void refine_dqq_topology(const Level& parent, Dual_scratch& scratch,
+                         Level& child, bool last) {
+  child.edge_marks = {};
+  if (parent.border_edge_count == 0)
+    refine_closed(parent, scratch, child, last);
+  else
+    refine_open(parent, scratch, child, last);
+}
+
+}  // namespace refine
+}  // namespace subdivlab

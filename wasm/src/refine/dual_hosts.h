@@ -1,0 +1,57 @@
+// The dual refinement host on flat tables: DQQ (Doo-Sabin's construction,
+// a face per face, per interior edge and per vertex), numbered as the
+// route CGAL's hosts take numbers it: CGAL's DQQ_1step followed by
+// Surface_mesh::collect_garbage on closed meshes, SubdivLab's
+// DQQ_border_1step (core/dqq_border_3.h) on open ones. Topology only: the
+// points come from dual_points.h. Owner: dual_hosts.cpp.
+//
+// A DQQ level has mixed face degrees (F-faces keep their parent's, V-faces
+// have their vertex's valence, E-faces are quads): face_offsets always.
+// Each new vertex is a corner of the parent (a non-border halfedge x: the
+// corner of face(x) at target(x)); the step records which in
+// Dual_scratch::corner_vertex, which the points read.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "refine_level.h"
+
+namespace subdivlab {
+namespace refine {
+
+/// Per-parent tables a step fills; kept between steps so that their memory
+/// is reused.
+struct Dual_scratch {
+  /// Per parent halfedge: the child vertex of its corner (kNone on the
+  /// border). A border corner of an ear has a second vertex, this + 1.
+  std::vector<std::uint32_t> corner_vertex;
+  std::vector<std::uint32_t> next, prev;  ///< per non-border halfedge
+  /// Closed: each corner's cut edge before the garbage is collected.
+  /// Open: the F-face halfedge into each corner's vertex.
+  std::vector<std::uint32_t> edge_of;
+  /// Open: rank of each interior edge; closed: valence of each vertex.
+  std::vector<std::uint32_t> rank;
+  std::vector<std::uint32_t> moved;  ///< closed: slots collect_garbage moves
+  std::vector<std::uint8_t> removed;
+};
+
+/// Bytes of the scratch for a parent with these counts.
+double dual_scratch_bytes(double vertices, double edges, double faces,
+                          bool border);
+
+/// level.vertex_halfedge as Surface_mesh::add_face leaves it after adding
+/// the level's faces in order (build_mesh, DQQ_border_1step): on the border
+/// the border halfedge into v, inside the halfedge into v of the last face
+/// around v. Precondition: the halfedge tables.
+void add_face_vertex_halfedges(Level& level);
+
+/// The child level's topology (everything but positions): counts, face
+/// offsets and vertices; unless `last`, its halfedge tables and vertex
+/// halfedges. `child`'s vectors are reused. Preconditions: a valid level
+/// with vertex_halfedge; no interior vertex of valence 2.
+void refine_dqq_topology(const Level& parent, Dual_scratch& scratch,
+                         Level& child, bool last);
+
+}  // namespace refine
+}  // namespace subdivlab
