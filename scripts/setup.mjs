@@ -10,9 +10,9 @@
 // CMake builds use 2 jobs; CMAKE_BUILD_PARALLEL_LEVEL sets another number.
 // Usage: node scripts/setup.mjs [--wasm-only] [--native] [--wasm-tests]
 import { spawnSync } from 'node:child_process';
-import { existsSync, lstatSync, mkdirSync, statSync, symlinkSync } from 'node:fs';
+import { existsSync, lstatSync, mkdirSync, readFileSync, statSync, symlinkSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const args = new Set(process.argv.slice(2));
@@ -124,6 +124,30 @@ function buildWasm() {
   run('cmake', ['--build', wasmBuildDir, '--parallel', jobs], { env: emccEnv });
 }
 
+/**
+ * web/core/generated/scheme-table.json: the core's scheme and host table
+ * (wasm/src/core/scheme_table.cpp) as the built module answers it, so that
+ * the app reads the names, labels, descriptions and needs of the schemes
+ * before its worker has started. Rewritten only when it changed.
+ */
+async function writeSchemeTable() {
+  const generated = join(root, 'web', 'core', 'generated');
+  const { default: createModule } = await import(pathToFileURL(join(generated, 'subdivlab.mjs')).href);
+  const core = await createModule({
+    wasmBinary: readFileSync(join(generated, 'subdivlab.wasm')),
+    print: () => {},
+    printErr: () => {},
+  });
+  const info = core.scheme_info();
+  if (!info.ok) throw new Error(`the core's scheme table: ${info.message}`);
+  const text = `${JSON.stringify({ hosts: info.hosts, schemes: info.schemes }, null, 2)}\n`;
+  const path = join(generated, 'scheme-table.json');
+  if (!existsSync(path) || readFileSync(path, 'utf8') !== text) {
+    log('writing the scheme table for the app (web/core/generated/scheme-table.json)');
+    writeFileSync(path, text);
+  }
+}
+
 /** build/wasm/core_tests_wasm.cjs: tests/core on the module's core objects. */
 function buildWasmTests() {
   log('building the wasm32 core tests (no-op when sources are unchanged)');
@@ -156,6 +180,7 @@ try {
     extractCgalMeshes();
   }
   buildWasm();
+  await writeSchemeTable();
   if (args.has('--native')) buildNative();
   if (args.has('--wasm-tests')) buildWasmTests();
   if (!args.has('--wasm-only') && existsSync(join(root, 'vite.cli.config.ts'))) buildCli();

@@ -3,9 +3,10 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import type { CgalSchemeName, Mesh, MeshFacts, SchemeName } from '../../web/core/mesh';
 import type { RuleHost } from '../../web/core/rule-set';
+import { SCHEME_TABLE } from '../../web/core/scheme-table';
 import { coreSchemeInfo, hostOf, meshFacts, schemeNames, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
-import { hostLabel, hostNeedsTriangles, schemeInfo } from '../../web/viewer/scheme-info';
+import { hostLabel, hostNeedsTriangles, SCHEME_NAMES, schemeInfo } from '../../web/viewer/scheme-info';
 import { catmullClarkStep, loopStep, repeat } from './reference-subdivision';
 import { expectCounts, expectSameMesh, expectSamePoints, loadFixture, toPlain } from './test-helpers';
 
@@ -306,16 +307,25 @@ describe("the core's scheme table", () => {
     }
   });
 
-  it("agrees with the app's picker (web/viewer/scheme-info.ts) until the app reads it", () => {
-    const { hosts, schemes } = coreSchemeInfo();
+  it("is what the app reads: set-up wrote the module's table for it, and the picker shows it", () => {
+    const core = coreSchemeInfo();
+    expect(SCHEME_TABLE).toEqual(core);
+    expect(SCHEME_NAMES).toEqual(schemeNames());
+    const { hosts, schemes } = core;
     for (const s of schemes) {
       const app = schemeInfo(s.name);
+      expect(app.label, s.name).toBe(s.label);
       expect(app.description, s.name).toBe(s.description);
       if (s.host) expect(app.needsTriangles, s.name).toBe(hosts.find((h) => h.name === s.host)?.needsTriangles);
+      else expect(app.needsRules, s.name).toBe(true);
     }
+    expect(schemeInfo('sqrt3').label).toBe('√3 (Kobbelt)');
+    expect(schemeInfo('loop').needsTriangles).toBe(true);
+    expect(schemeInfo('catmull-clark').needsTriangles).toBe(false);
     for (const h of hosts.filter((x) => x.name !== 'pqt')) {
       expect(hostLabel(h.name as RuleHost)).toBe(h.label);
       expect(hostNeedsTriangles(h.name as RuleHost)).toBe(h.needsTriangles);
     }
+    expect(hostLabel('sqrt3')).toBe('√3');
   });
 });

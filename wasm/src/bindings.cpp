@@ -517,6 +517,7 @@ val js_scheme_info() {
     for (const Scheme_info& s : scheme_table()) {
       val o = val::object();
       o.set("name", s.name);
+      o.set("label", s.label);
       o.set("host", s.host.empty() ? val::null() : val(s.host));
       o.set("description", s.description);
       schemes.call<void>("push", o);

@@ -3,7 +3,8 @@
  * `init()` once (idempotent), then call the typed, stateless API: meshes go in
  * and come out as flat typed arrays owned by JS, so nothing needs freeing.
  * Every failure is thrown as a {@link SubdivError} carrying the core's code,
- * message and line. Nothing else in the project imports ./generated/.
+ * message and line. Nothing else in the project imports the module's glue
+ * in ./generated/ (scheme-table.ts reads the table set-up writes beside it).
  */
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
@@ -284,10 +285,10 @@ export interface HostInfo {
   sizeModel: string;
 }
 
-/** What the core knows of its schemes: each scheme's host (null for custom: its rule set's) and description. */
+/** What the core knows of its schemes: each scheme's label, host (null for custom: its rule set's) and description. */
 export interface CoreSchemeInfo {
   hosts: HostInfo[];
-  schemes: { name: string; host: string | null; description: string }[];
+  schemes: { name: string; label: string; host: string | null; description: string }[];
 }
 
 /** The core's scheme and host table (wasm/src/core/scheme_table.cpp), in display order. */

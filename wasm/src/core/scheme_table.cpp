@@ -21,28 +21,28 @@ const std::vector<Host_info>& host_table() {
 
 const std::vector<Scheme_info>& scheme_table() {
   static const std::vector<Scheme_info> schemes = {
-      {"catmull-clark", "pqq",
+      {"catmull-clark", "Catmull-Clark", "pqq",
        "Quad refinement (PQQ): every face splits into quads; smooth, "
        "approximating. Any polygons."},
-      {"loop", "ptq",
+      {"loop", "Loop", "ptq",
        "Triangle refinement (PTQ): each triangle splits into four; smooth, "
        "approximating. Needs triangles."},
-      {"doo-sabin", "dqq",
+      {"doo-sabin", "Doo-Sabin", "dqq",
        "Dual quad refinement (DQQ): new faces for every face, edge and "
        "vertex; cuts corners. Any polygons."},
-      {"sqrt3", "sqrt3",
+      {"sqrt3", "\u221a3 (Kobbelt)", "sqrt3",
        "Each triangle gets a centre vertex, then old edges flip; triples "
        "faces per step. Needs triangles."},
-      {"quad-triangle", "pqt",
+      {"quad-triangle", "Quad/Triangle", "pqt",
        "Stam & Loop: triangles and quads refined together; after one step "
        "only triangles and quads."},
-      {"linear", "pqq",
+      {"linear", "Linear (PQQ)", "pqq",
        "Quad refinement with averaging only: centroids and midpoints, "
        "vertices stay. Any polygons."},
-      {"linear-tri", "ptq",
+      {"linear-tri", "Linear (PTQ)", "ptq",
        "Midpoint split of triangles; the surface does not move. Needs "
        "triangles."},
-      {"custom", "",
+      {"custom", "Custom rules", "",
        "Your own weights on a refinement host (PQQ, PTQ, DQQ or \u221a3): "
        "edit them in the Rules panel."},
   };

@@ -80,6 +80,7 @@ struct Host_info {
 /// A scheme: a host and the weights of its mask.
 struct Scheme_info {
   std::string name;
+  std::string label;        ///< the name a picker shows
   std::string host;         ///< a Host_info name; empty for custom (its rules')
   std::string description;  ///< one line for a picker
 };
