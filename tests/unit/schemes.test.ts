@@ -286,7 +286,7 @@ describe("the core's scheme table", () => {
       ['pqq', false, true, true, 'catmull-clark'],
       ['ptq', true, true, true, 'loop'],
       ['dqq', false, false, true, 'doo-sabin'],
-      ['sqrt3', true, false, false, 'sqrt3'],
+      ['sqrt3', true, false, true, 'sqrt3'],
       ['pqt', false, true, false, 'quad-triangle'],
     ]);
   });

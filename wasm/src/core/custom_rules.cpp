@@ -140,7 +140,6 @@ Status custom_rules_degree_refusal(const Custom_rules& r, std::size_t k) {
 
 Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
   Custom_rules r;
-  const double pi = CGAL_PI;
   if (max_valence < 3) max_valence = 3;
   auto for_valences = [&](auto weights) {
     r.first_valence = 3;
@@ -177,15 +176,12 @@ Custom_rules custom_rules_preset(const std::string& name, int max_valence) {
       r.corner.push_back(refine::doo_sabin_corner_weights(k));
     r.border_corner = {0.75, 0.25};
   } else if (name == "sqrt3") {
-    // Sqrt3_mask_3: a(n) = (4 - 2 cos(2 pi / n)) / 9; border 1/27 (1, 16, 10)
-    // and (4, 19, 4).
+    // Sqrt3_mask_3: the fast host's weights (refine/primal_masks.h).
     r.host = "sqrt3";
-    for_valences([&](double n) {
-      const double a = (4.0 - 2.0 * std::cos(2.0 * pi / n)) / 9.0;
-      return Vertex_weights{1 - a, a / n, 0.0};
-    });
-    r.border_edge = {1.0 / 27, 16.0 / 27, 10.0 / 27, 0.0};
-    r.border_vertex = {4.0 / 27, 19.0 / 27, 4.0 / 27};
+    for_valences(refine::sqrt3_vertex_weights);
+    const refine::Primal_mask m = refine::sqrt3_mask("sqrt3", {}).mask;
+    r.border_edge = m.border_edge;
+    r.border_vertex = m.border_vertex;
   } else if (name == "linear") {
     r.host = "pqq";
     for_valences([](double) { return Vertex_weights{1.0, 0.0, 0.0}; });

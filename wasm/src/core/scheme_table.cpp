@@ -13,7 +13,7 @@ const std::vector<Host_info>& host_table() {
       {"pqq", false, true, true, "catmull-clark", "PQQ"},
       {"ptq", true, true, true, "loop", "PTQ"},
       {"dqq", false, false, true, "doo-sabin", "DQQ"},
-      {"sqrt3", true, false, false, "sqrt3", "\u221a3"},
+      {"sqrt3", true, false, true, "sqrt3", "\u221a3"},
       {"pqt", false, true, false, "quad-triangle", "PQT"},
   };
   return hosts;

@@ -11,6 +11,7 @@
 #include "refine/dual_hosts.h"
 #include "refine/level_convert.h"
 #include "refine/primal_points.h"
+#include "refine/sqrt3_host.h"
 #include "render_buffers.h"
 #include "scheme_table.h"
 
@@ -332,11 +333,16 @@ double fast_step_peak(const std::string& scheme, const Counts& c,
   const double child =
       refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked, last) +
       (dual ? 4 * (n.faces + 1) + (last ? 0 : 4 * n.vertices) : 0);
+  // sqrt3: the primal points' sums, and on a border step a code per face
+  // (counted whenever there is a border).
   const double scratch =
       dual ? refine::dual_scratch_bytes(c.vertices, c.edges, c.faces,
                                         c.border_edges > 0)
            : refine::primal_scratch_bytes(c.vertices, scheme == "catmull-clark",
-                                          c.border_edges > 0);
+                                          c.border_edges > 0) +
+                 (scheme == "sqrt3"
+                      ? refine::sqrt3_scratch_bytes(c.faces, c.border_edges > 0)
+                      : 0);
   double peak = base + parent + child + scratch;
   // Level 0 comes from the buffers (check_buffers' temporaries: 32 bytes
   // a corner, 8 a vertex, 4 a face; then the level beside the corners'

@@ -1,7 +1,8 @@
 // The subdivision driver: options checked, the run's size predicted
 // (size_model.h), then one step at a time, each preceded by a size check,
 // on one of two routes:
-//   fast hosts (refine/) for the PQQ, PTQ and DQQ schemes (scheme_table.h):
+//   fast hosts (refine/) for the PQQ, PTQ, DQQ and sqrt3 schemes
+//     (scheme_table.h):
 //     level 0 taken from the checked buffers, or from CGAL's mesh when
 //     polygons must be triangulated first; the levels' tables derived in
 //     CGAL's numbering; the last level's arrays moved into the result.
@@ -44,6 +45,7 @@
 #include "refine/primal_hosts.h"
 #include "refine/primal_masks.h"
 #include "refine/primal_points.h"
+#include "refine/sqrt3_host.h"
 #include "scheme_table.h"
 #include "size_model.h"
 
@@ -180,22 +182,37 @@ Status prepare(const Mesh_buffers& in, const Subdivide_options& options,
   return check_two_valent_vertices(mesh, options);
 }
 
-Status sqrt3_step(Mesh& mesh, int global_step) {
+/// The refusal of a border step (sqrt3 or custom rules on its host) on a
+/// mesh with `multi` faces that have more than one border edge: the host
+/// assumes at most one, which holds for the output of a non-border step
+/// but not for arbitrary input.
+Status sqrt3_border_refusal(const Subdivide_options& options, int global_step,
+                            double multi) {
+  if (options.scheme == "custom")
+    return Status::error(
+        Status_code::invalid_argument,
+        "start_level " + std::to_string(global_step) +
+            " of custom (sqrt3 host) refines the border, which needs a mesh "
+            "from an even level, but some faces have more than one border "
+            "edge; start from level 0");
+  return Status::error(
+      Status_code::invalid_argument,
+      "start_level " + std::to_string(global_step) +
+          " of sqrt3 refines the border, which needs a mesh from an even "
+          "level of sqrt3, but " +
+          format_count(multi) +
+          " faces have more than one border edge; start from level 0");
+}
+
+Status sqrt3_step(Mesh& mesh, const Subdivide_options& options,
+                  int global_step) {
   if (!sqrt3_refines_border(global_step) || CGAL::is_closed(mesh)) {
     SM3::Sqrt3_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
     return Status::success();
   }
-  // A border step. Its host assumes at most one border edge per face, which
-  // holds for the output of a non-border step but not for arbitrary input.
   const Counts c = counts_of(mesh);
   if (c.multi_border_faces > 0)
-    return Status::error(
-        Status_code::invalid_argument,
-        "start_level " + std::to_string(global_step) +
-            " of sqrt3 refines the border, which needs a mesh from an even "
-            "level of sqrt3, but " +
-            format_count(c.multi_border_faces) +
-            " faces have more than one border edge; start from level 0");
+    return sqrt3_border_refusal(options, global_step, c.multi_border_faces);
   // The public Sqrt3_subdivision ties the border parity to its own loop
   // counter, so a single border step needs the host CGAL's loop calls.
   SM3::internal::Sqrt3_1step(
@@ -383,6 +400,51 @@ Status run_dual_steps(refine::Level& parent, Counts counts,
   return Status::success();
 }
 
+/// run_primal_steps for the sqrt(3) host (`mask` from refine::sqrt3_mask):
+/// the border refined on odd global steps of an open mesh, refused there
+/// when a face has two border edges, as sqrt3_step and run_step refuse it.
+Status run_sqrt3_steps(refine::Level& parent, Counts counts,
+                       const refine::Primal_mask& mask,
+                       const Subdivide_options& options, const Mesh_buffers& in,
+                       double input, Mesh_buffers& out, int& level) {
+  const Caps mesh_caps = Caps::exact(counts);
+  refine::Level child;
+  refine::Sqrt3_scratch scratch;
+  refine::Primal_scratch points;
+  for (int i = 0; i < options.levels; ++i) {
+    const int global_step = options.start_level + i;
+    level = global_step + 1;
+    const bool last = i + 1 == options.levels;
+    const Step_need need = step_need(options, counts, mesh_caps, global_step,
+                                     i == 0, last, 0, input);
+    Status s = check_step(options.scheme, need, global_step,
+                          options.memory_limit_bytes);
+    if (!s.ok()) return s;
+    const std::uint32_t uncovered =
+        refine::primal_uncovered_valence(parent, mask, points);
+    if (uncovered != 0)
+      return custom_rules_valence_refusal(options.custom, uncovered);
+    const bool border_step =
+        sqrt3_refines_border(global_step) && parent.border_edge_count > 0;
+    if (border_step) {
+      const std::uint32_t multi = refine::sqrt3_multi_border_faces(parent);
+      if (multi > 0) return sqrt3_border_refusal(options, global_step, multi);
+    }
+    refine::refine_sqrt3_topology(parent, border_step, scratch, child, last);
+    refine::refine_sqrt3_points(parent, mask, border_step, scratch, points,
+                                child);
+    for (double x : child.positions)
+      if (!std::isfinite(x)) return overflow(in, options.scheme, level);
+    std::swap(parent, child);
+    counts = need.after;
+  }
+  child = refine::Level();
+  scratch = refine::Sqrt3_scratch();
+  points = refine::Primal_scratch();
+  out = refine::level_to_buffers(std::move(parent));
+  return Status::success();
+}
+
 }  // namespace
 
 /// Runs ONE step of `options.scheme` on `mesh`. `level_index` counts the
@@ -404,7 +466,7 @@ Status run_step(Mesh& mesh, const Subdivide_options& options, int level_index) {
     else
       DooSabin_border_subdivision(mesh, one_step);
   } else if (scheme == "sqrt3") {
-    s = sqrt3_step(mesh, global_step);
+    s = sqrt3_step(mesh, options, global_step);
   } else if (scheme == "quad-triangle") {
     QuadTriangle_subdivision(mesh, 1, options.smooth_boundary);
   } else if (scheme == "linear") {
@@ -417,12 +479,7 @@ Status run_step(Mesh& mesh, const Subdivide_options& options, int level_index) {
     if (s.ok() && options.custom.host == "sqrt3" &&
         sqrt3_refines_border(global_step) && !CGAL::is_closed(mesh) &&
         counts_of(mesh).multi_border_faces > 0)
-      s = Status::error(
-          Status_code::invalid_argument,
-          "start_level " + std::to_string(global_step) +
-              " of custom (sqrt3 host) refines the border, which needs a mesh "
-              "from an even level, but some faces have more than one border "
-              "edge; start from level 0");
+      s = sqrt3_border_refusal(options, global_step, 0);
     if (s.ok()) custom_subdivision_step(mesh, options.custom, global_step);
   } else {
     return Status::error(
@@ -502,7 +559,9 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
                       static_cast<double>(in.face_indices.size()));
     const refine::Dual_mask_lookup dual =
         refine::dual_mask(options.scheme, options.custom);
-    if ((fast.ok || dual.ok) && runs_on_fast_host(options) &&
+    const refine::Primal_mask_lookup sqrt3 =
+        refine::sqrt3_mask(options.scheme, options.custom);
+    if ((fast.ok || dual.ok || sqrt3.ok) && runs_on_fast_host(options) &&
         options.levels > 0) {
       refine::Level level0;
       Counts counts;
@@ -514,6 +573,9 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       if (s.ok() && fast.ok)
         s = run_primal_steps(level0, counts, marks, fast.mask, options, in,
                              input, result.value, level);
+      else if (s.ok() && sqrt3.ok)
+        s = run_sqrt3_steps(level0, counts, sqrt3.mask, options, in, input,
+                            result.value, level);
       else if (s.ok())
         s = run_dual_steps(level0, counts, dual.mask, options, in, input,
                            result.value, level);

@@ -16,6 +16,11 @@ Vertex_weights loop_vertex_weights(double n) {
   return {1 - n * beta, beta, 0.0};
 }
 
+Vertex_weights sqrt3_vertex_weights(double n) {
+  const double a = (4.0 - 2.0 * std::cos(2.0 * CGAL_PI / n)) / 9.0;
+  return {1 - a, a / n, 0.0};
+}
+
 namespace {
 
 Vertex_weights linear_vertex_weights(double) { return {1.0, 0.0, 0.0}; }
@@ -46,6 +51,27 @@ Primal_mask_lookup primal_mask(const std::string& scheme,
     m.pqq = custom.host == "pqq";
     m.edge_end = custom.edge_end;
     m.edge_wing = custom.edge_wing;
+    m.border_vertex = custom.border_vertex;
+    m.border_edge = custom.border_edge;
+    m.first_valence = custom.first_valence;
+    m.vertex = custom.vertex;
+  } else {
+    r.ok = false;
+  }
+  return r;
+}
+
+Primal_mask_lookup sqrt3_mask(const std::string& scheme,
+                              const Custom_rules& custom) {
+  Primal_mask_lookup r;
+  Primal_mask& m = r.mask;
+  m.pqq = false;
+  r.ok = true;
+  if (scheme == "sqrt3") {
+    m.rule = sqrt3_vertex_weights;
+    m.border_edge = {1.0 / 27, 16.0 / 27, 10.0 / 27, 0.0};
+    m.border_vertex = {4.0 / 27, 19.0 / 27, 4.0 / 27};
+  } else if (scheme == "custom" && custom.host == "sqrt3") {
     m.border_vertex = custom.border_vertex;
     m.border_edge = custom.border_edge;
     m.first_valence = custom.first_valence;

@@ -1,8 +1,9 @@
 // The masks of the primal schemes as weights: the geometry of the PQQ and
-// PTQ hosts (primal_hosts.h), in the form of custom rules (custom_rules.h)
-// so that built-in and custom schemes run through one kernel. The weights
-// of Catmull-Clark, Loop and the linear schemes are defined here once; the
-// custom-rule presets read them from here.
+// PTQ hosts (primal_hosts.h) and of the sqrt(3) host (sqrt3_host.h), in the
+// form of custom rules (custom_rules.h) so that built-in and custom schemes run
+// through one kernel. The weights of Catmull-Clark, Loop, sqrt(3) and the
+// linear schemes are defined here once; the custom-rule presets read them from
+// here.
 //
 // Rules (p = the parent points; wings = the face points of the two faces of
 // an edge on PQQ, the vertices opposite it on PTQ):
@@ -33,6 +34,10 @@ inline Vertex_weights catmull_clark_vertex_weights(double n) {
 /// Loop_mask_3: beta = (5/8 - (3 + 2 cos(2 pi / n))^2 / 64) / n, 1/16 at
 /// n = 6.
 Vertex_weights loop_vertex_weights(double n);
+
+/// Sqrt3_mask_3: a(n) = (4 - 2 cos(2 pi / n)) / 9; (1 - a) v + a / n per
+/// neighbour.
+Vertex_weights sqrt3_vertex_weights(double n);
 
 struct Primal_mask {
   bool pqq = true;  ///< PQQ host (face points, face wings) or PTQ
@@ -65,6 +70,14 @@ struct Primal_mask_lookup {
 };
 Primal_mask_lookup primal_mask(const std::string& scheme,
                                const Custom_rules& custom);
+
+/// The mask of the sqrt(3) host (sqrt3_host.h) in the same form: sqrt3, or
+/// custom with the sqrt3 host. Read: the vertex weights, border_vertex
+/// (c, b, a as above) and border_edge (the new point nearer the border
+/// halfedge's source, mirrored for the other); `pqq` and the edge weights
+/// are not. Sqrt3_mask_3's border: 1/27 (1, 16, 10, 0) and (4, 19, 4).
+Primal_mask_lookup sqrt3_mask(const std::string& scheme,
+                              const Custom_rules& custom);
 
 }  // namespace refine
 }  // namespace subdivlab
