@@ -323,37 +323,31 @@ Status prepare_level(const Mesh_buffers& in, const Subdivide_options& options,
   return Status::success();
 }
 
-/// Runs the steps of `options` on the fast primal hosts (refine/, `mask`
-/// from refine::primal_mask) from `parent` (level 0 from prepare_level,
-/// with `counts` and `marks` control edges). Each step is checked against
-/// the memory limit first, as the CGAL steps are. `level` follows the step
-/// for messages.
-Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
-                        const refine::Primal_mask& mask,
-                        const Subdivide_options& options,
-                        const Mesh_buffers& in, double input, Mesh_buffers& out,
-                        int& level) {
+/// Runs the steps of `options` on a fast host (refine/) from `parent`
+/// (level 0 from prepare_level, with `counts` and `marks` control edges).
+/// Each step is checked against the memory limit first, as the CGAL steps
+/// are; then `step(parent, child, global_step, last)` refines `parent` into
+/// `child` or refuses with its status; a point that is not finite ends the
+/// run. `free_scratch` lets the host's scratch go before the output buffers
+/// are made (the memory model counts it gone). `level` follows the step for
+/// messages.
+template <class Step, class Free_scratch>
+Status run_fast_steps(refine::Level& parent, Counts counts, double marks,
+                      const Subdivide_options& options, const Mesh_buffers& in,
+                      double input, Mesh_buffers& out, int& level, Step&& step,
+                      Free_scratch&& free_scratch) {
   const Caps mesh_caps = Caps::exact(counts);
   refine::Level child;
-  refine::Primal_scratch scratch;
   for (int i = 0; i < options.levels; ++i) {
-    level = options.start_level + i + 1;
+    const int global_step = options.start_level + i;
+    level = global_step + 1;
     const bool last = i + 1 == options.levels;
-    const Step_need need =
-        step_need(options, counts, mesh_caps, options.start_level + i, i == 0,
-                  last, marks, input);
-    Status s = check_step(options.scheme, need, options.start_level + i,
+    const Step_need need = step_need(options, counts, mesh_caps, global_step,
+                                     i == 0, last, marks, input);
+    Status s = check_step(options.scheme, need, global_step,
                           options.memory_limit_bytes);
+    if (s.ok()) s = step(parent, child, global_step, last);
     if (!s.ok()) return s;
-    const std::uint32_t uncovered =
-        refine::primal_uncovered_valence(parent, mask, scratch);
-    if (uncovered != 0)
-      return custom_rules_valence_refusal(options.custom, uncovered);
-    if (mask.pqq)
-      refine::refine_pqq_topology(parent, child, last);
-    else
-      refine::refine_ptq_topology(parent, child, last);
-    refine::refine_primal_points(parent, mask, scratch, child);
     for (double x : child.positions)
       if (!std::isfinite(x)) return overflow(in, options.scheme, level);
     std::swap(parent, child);
@@ -361,88 +355,87 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
     marks *= 2;
   }
   child = refine::Level();
-  scratch = refine::Primal_scratch();
+  free_scratch();
   out = refine::level_to_buffers(std::move(parent));
   return Status::success();
 }
 
-/// run_primal_steps for the DQQ host (`mask` from refine::dual_mask).
+/// The primal hosts (`mask` from refine::primal_mask).
+Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
+                        const refine::Primal_mask& mask,
+                        const Subdivide_options& options,
+                        const Mesh_buffers& in, double input, Mesh_buffers& out,
+                        int& level) {
+  refine::Primal_scratch scratch;
+  return run_fast_steps(
+      parent, counts, marks, options, in, input, out, level,
+      [&](const refine::Level& p, refine::Level& c, int, bool last) {
+        const std::uint32_t uncovered =
+            refine::primal_uncovered_valence(p, mask, scratch);
+        if (uncovered != 0)
+          return custom_rules_valence_refusal(options.custom, uncovered);
+        if (mask.pqq)
+          refine::refine_pqq_topology(p, c, last);
+        else
+          refine::refine_ptq_topology(p, c, last);
+        refine::refine_primal_points(p, mask, scratch, c);
+        return Status::success();
+      },
+      [&] { scratch = refine::Primal_scratch(); });
+}
+
+/// The DQQ host (`mask` from refine::dual_mask).
 Status run_dual_steps(refine::Level& parent, Counts counts,
                       const refine::Dual_mask& mask,
                       const Subdivide_options& options, const Mesh_buffers& in,
                       double input, Mesh_buffers& out, int& level) {
-  const Caps mesh_caps = Caps::exact(counts);
   refine::add_face_vertex_halfedges(parent);
-  refine::Level child;
   refine::Dual_scratch scratch;
-  for (int i = 0; i < options.levels; ++i) {
-    level = options.start_level + i + 1;
-    const bool last = i + 1 == options.levels;
-    const Step_need need =
-        step_need(options, counts, mesh_caps, options.start_level + i, i == 0,
-                  last, 0, input);
-    Status s = check_step(options.scheme, need, options.start_level + i,
-                          options.memory_limit_bytes);
-    if (!s.ok()) return s;
-    const std::uint32_t uncovered = refine::dual_uncovered_degree(parent, mask);
-    if (uncovered != 0)
-      return custom_rules_degree_refusal(options.custom, uncovered);
-    refine::refine_dqq_topology(parent, scratch, child, last);
-    refine::refine_dual_points(parent, mask, scratch, child);
-    for (double x : child.positions)
-      if (!std::isfinite(x)) return overflow(in, options.scheme, level);
-    std::swap(parent, child);
-    counts = need.after;
-  }
-  child = refine::Level();
-  scratch = refine::Dual_scratch();
-  out = refine::level_to_buffers(std::move(parent));
-  return Status::success();
+  return run_fast_steps(
+      parent, counts, 0, options, in, input, out, level,
+      [&](const refine::Level& p, refine::Level& c, int, bool last) {
+        const std::uint32_t uncovered = refine::dual_uncovered_degree(p, mask);
+        if (uncovered != 0)
+          return custom_rules_degree_refusal(options.custom, uncovered);
+        refine::refine_dqq_topology(p, scratch, c, last);
+        refine::refine_dual_points(p, mask, scratch, c);
+        return Status::success();
+      },
+      [&] { scratch = refine::Dual_scratch(); });
 }
 
-/// run_primal_steps for the sqrt(3) host (`mask` from refine::sqrt3_mask):
-/// the border refined on odd global steps of an open mesh, refused there
-/// when a face has two border edges, as sqrt3_step and run_step refuse it.
+/// The sqrt(3) host (`mask` from refine::sqrt3_mask): the border refined
+/// on odd global steps of an open mesh, refused there when a face has two
+/// border edges, as sqrt3_step and run_step refuse it.
 Status run_sqrt3_steps(refine::Level& parent, Counts counts,
                        const refine::Primal_mask& mask,
                        const Subdivide_options& options, const Mesh_buffers& in,
                        double input, Mesh_buffers& out, int& level) {
-  const Caps mesh_caps = Caps::exact(counts);
-  refine::Level child;
   refine::Sqrt3_scratch scratch;
   refine::Primal_scratch points;
-  for (int i = 0; i < options.levels; ++i) {
-    const int global_step = options.start_level + i;
-    level = global_step + 1;
-    const bool last = i + 1 == options.levels;
-    const Step_need need = step_need(options, counts, mesh_caps, global_step,
-                                     i == 0, last, 0, input);
-    Status s = check_step(options.scheme, need, global_step,
-                          options.memory_limit_bytes);
-    if (!s.ok()) return s;
-    const std::uint32_t uncovered =
-        refine::primal_uncovered_valence(parent, mask, points);
-    if (uncovered != 0)
-      return custom_rules_valence_refusal(options.custom, uncovered);
-    const bool border_step =
-        sqrt3_refines_border(global_step) && parent.border_edge_count > 0;
-    if (border_step) {
-      const std::uint32_t multi = refine::sqrt3_multi_border_faces(parent);
-      if (multi > 0) return sqrt3_border_refusal(options, global_step, multi);
-    }
-    refine::refine_sqrt3_topology(parent, border_step, scratch, child, last);
-    refine::refine_sqrt3_points(parent, mask, border_step, scratch, points,
-                                child);
-    for (double x : child.positions)
-      if (!std::isfinite(x)) return overflow(in, options.scheme, level);
-    std::swap(parent, child);
-    counts = need.after;
-  }
-  child = refine::Level();
-  scratch = refine::Sqrt3_scratch();
-  points = refine::Primal_scratch();
-  out = refine::level_to_buffers(std::move(parent));
-  return Status::success();
+  return run_fast_steps(
+      parent, counts, 0, options, in, input, out, level,
+      [&](const refine::Level& p, refine::Level& c, int global_step,
+          bool last) {
+        const std::uint32_t uncovered =
+            refine::primal_uncovered_valence(p, mask, points);
+        if (uncovered != 0)
+          return custom_rules_valence_refusal(options.custom, uncovered);
+        const bool border_step =
+            sqrt3_refines_border(global_step) && p.border_edge_count > 0;
+        if (border_step) {
+          const std::uint32_t multi = refine::sqrt3_multi_border_faces(p);
+          if (multi > 0)
+            return sqrt3_border_refusal(options, global_step, multi);
+        }
+        refine::refine_sqrt3_topology(p, border_step, scratch, c, last);
+        refine::refine_sqrt3_points(p, mask, border_step, scratch, points, c);
+        return Status::success();
+      },
+      [&] {
+        scratch = refine::Sqrt3_scratch();
+        points = refine::Primal_scratch();
+      });
 }
 
 }  // namespace
