@@ -110,32 +110,35 @@ void vertex_normals(const Mesh_buffers& mesh, std::vector<float>& out) {
   }
 }
 
+/// Calls visit(a, b) for the edge from each corner a to the next one b,
+/// face by face.
+template <class Visit>
+void for_each_corner_edge(const Mesh_buffers& mesh, Visit&& visit) {
+  const std::uint32_t* fv = mesh.face_indices.data();
+  std::size_t at = 0;
+  for (std::uint32_t size : mesh.face_sizes) {
+    for (std::uint32_t k = 0; k < size; ++k)
+      visit(fv[at + k], fv[at + (k + 1 == size ? 0 : k + 1)]);
+    at += size;
+  }
+}
+
 /// The edges of the corners that go from a smaller to a larger vertex, in
 /// corner order, when they are all `expected` edges (every edge of a closed
 /// mesh has one such corner, and one only); otherwise false, `out` unset.
 bool edges_going_up(const Mesh_buffers& mesh, std::size_t expected,
                     std::vector<std::uint32_t>& out) {
-  const std::uint32_t* fv = mesh.face_indices.data();
-  std::size_t up = 0, at = 0;
-  for (std::uint32_t size : mesh.face_sizes) {
-    for (std::uint32_t k = 0; k < size; ++k)
-      up += fv[at + k] < fv[at + (k + 1 == size ? 0 : k + 1)];
-    at += size;
-  }
+  std::size_t up = 0;
+  for_each_corner_edge(
+      mesh, [&up](std::uint32_t a, std::uint32_t b) { up += a < b; });
   if (up != expected) return false;
   out.resize(2 * up);
   std::uint32_t* e = out.data();
-  at = 0;
-  for (std::uint32_t size : mesh.face_sizes) {
-    for (std::uint32_t k = 0; k < size; ++k) {
-      const std::uint32_t a = fv[at + k];
-      const std::uint32_t b = fv[at + (k + 1 == size ? 0 : k + 1)];
-      if (a >= b) continue;
-      *e++ = a;
-      *e++ = b;
-    }
-    at += size;
-  }
+  for_each_corner_edge(mesh, [&e](std::uint32_t a, std::uint32_t b) {
+    if (a >= b) return;
+    *e++ = a;
+    *e++ = b;
+  });
   return true;
 }
 
@@ -147,18 +150,11 @@ bool edges_going_up(const Mesh_buffers& mesh, std::size_t expected,
 std::size_t polygon_edges(const Mesh_buffers& mesh,
                           std::vector<std::uint32_t>& out) {
   const std::size_t n = mesh.vertex_count();
-  const std::uint32_t* fv = mesh.face_indices.data();
   // Calls visit(lo, hi) for the edge from each corner to the next.
-  const auto each_corner_edge = [&mesh, fv](auto&& visit) {
-    std::size_t at = 0;
-    for (std::uint32_t size : mesh.face_sizes) {
-      for (std::uint32_t k = 0; k < size; ++k) {
-        const std::uint32_t a = fv[at + k];
-        const std::uint32_t b = fv[at + (k + 1 == size ? 0 : k + 1)];
-        visit(std::min(a, b), std::max(a, b));
-      }
-      at += size;
-    }
+  const auto each_corner_edge = [&mesh](auto&& visit) {
+    for_each_corner_edge(mesh, [&visit](std::uint32_t a, std::uint32_t b) {
+      visit(std::min(a, b), std::max(a, b));
+    });
   };
   // end[lo] ends bucket lo once the corners are placed (it starts as the
   // bucket's start and moves past each corner put in it).
