@@ -150,6 +150,20 @@ TEST(FastPrimalHosts, CatmullClarkAndLinearEqualCgal) {
   }
 }
 
+TEST(FastPrimalHosts, FacePointsWeighedApartFromNeighboursEqualCgal) {
+  // Face points weigh 2/n^2 and edge neighbours 1/(2 n^2) (Catmull-Clark
+  // gives both 1/n^2): the PQQ points sum face points apart.
+  Custom_rules apart = custom_rules_preset("catmull-clark", 64);
+  for (std::size_t i = 0; i < apart.vertex.size(); ++i) {
+    const double n = static_cast<double>(apart.first_valence + i);
+    apart.vertex[i] = {(n - 2.5) / n, 0.5 / (n * n), 2 / (n * n)};
+  }
+  ASSERT_TRUE(refine::primal_mask("custom", apart).mask.separate_face_sums());
+  ASSERT_FALSE(refine::primal_mask("catmull-clark", {}).mask
+                   .separate_face_sums());
+  for (const char* f : kAnyFaces) expect_cgal_levels("custom", apart, f, false);
+}
+
 TEST(FastPrimalHosts, LoopAndLinearTriEqualCgal) {
   for (const char* f : kAnyFaces) {
     expect_cgal_levels("loop", {}, f, true);

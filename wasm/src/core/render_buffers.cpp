@@ -227,10 +227,13 @@ std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
 
 double render_peak_bytes(double vertices, double edges, double corners,
                          double triangles) {
-  const double normals = 36 * vertices;  // double sums and float results
+  // One array at a time: float positions, then float normals summed in
+  // place; the fan; the edges (polygon_edges' bucket ends and larger ends
+  // beside its output, its stamps freed before the output is made).
+  const double floats = 12 * vertices;
   const double fan = 12 * triangles;
-  const double edge_list = 4 * corners + 8 * vertices + 8 * edges;
-  return std::max({normals, fan, edge_list});
+  const double edge_list = 4 * corners + 4 * vertices + 8 * edges;
+  return std::max({floats, fan, edge_list});
 }
 
 Render_buffers render_buffers(const Mesh_buffers& mesh) {

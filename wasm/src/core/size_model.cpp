@@ -315,14 +315,14 @@ double to_buffers_peak(const Counts& n, const Caps& caps, double base) {
 }
 
 /// Peak of a step on the fast primal hosts (refine/): the parent and
-/// child levels' tables and the step's per-vertex sums; on the first step
+/// child levels' tables and the step's per-vertex scratch; on the first step
 /// the Surface_mesh the level came from (freed before the step); after the
-/// last, the child level with the output's face sizes and control edges
-/// (positions and face vertices move out). The child of the last step has
-/// only its face vertices, and its halfedge targets when edges are marked.
-double fast_step_peak(const std::string& scheme, const Counts& c,
-                      const Counts& n, const Caps& caps, bool first, bool last,
-                      double marks, double base) {
+/// last, the child level with the output's face sizes (positions, face
+/// vertices and control edges move out). The child of the last step has
+/// only its face vertices and its marked edges' ends (4 per parent mark).
+double fast_step_peak(const std::string& scheme, bool face_sums,
+                      const Counts& c, const Counts& n, const Caps& caps,
+                      bool first, bool last, double marks, double base) {
   const bool marked = marks > 0;
   // DQQ levels keep their face offsets (mixed degrees) and, but for the
   // last, their vertices' halfedges.
@@ -332,13 +332,14 @@ double fast_step_peak(const std::string& scheme, const Counts& c,
       (first || dual ? 4 * (c.faces + 1) : 0) + (dual ? 4 * c.vertices : 0);
   const double child =
       refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked, last) +
-      (dual ? 4 * (n.faces + 1) + (last ? 0 : 4 * n.vertices) : 0);
-  // sqrt3: the primal points' sums, and on a border step a code per face
+      (dual ? 4 * (n.faces + 1) + (last ? 0 : 4 * n.vertices) : 0) +
+      (last ? 16 * marks : 0);
+  // sqrt3: the primal points' scratch, and on a border step a code per face
   // (counted whenever there is a border).
   const double scratch =
       dual ? refine::dual_scratch_bytes(c.vertices, c.edges, c.faces,
                                         c.border_edges > 0)
-           : refine::primal_scratch_bytes(c.vertices, scheme == "catmull-clark",
+           : refine::primal_scratch_bytes(c.vertices, face_sums,
                                           c.border_edges > 0) +
                  (scheme == "sqrt3"
                       ? refine::sqrt3_scratch_bytes(c.faces, c.border_edges > 0)
@@ -360,7 +361,7 @@ double fast_step_peak(const std::string& scheme, const Counts& c,
     peak = std::max(peak, base + std::max(from_buffers, from_mesh) + finding +
                               control_edge_bytes(marks));
   }
-  if (last) peak = std::max(peak, base + child + 4 * n.faces + 8 * 2 * marks);
+  if (last) peak = std::max(peak, base + child + 4 * n.faces);
   return peak;
 }
 
@@ -413,8 +414,10 @@ Step_need step_need(const Subdivide_options& options, const Counts& c,
   need.caps_after = caps;
   double peak = 0;
   if (runs_on_fast_host(options)) {
-    peak = fast_step_peak(scheme, c, need.after, caps, first, last, marks,
-                          input_bytes);
+    const bool face_sums = refine::primal_mask(options.scheme, options.custom)
+                               .mask.separate_face_sums();
+    peak = fast_step_peak(scheme, face_sums, c, need.after, caps, first, last,
+                          marks, input_bytes);
   } else {
     const double base = input_bytes + control_edge_bytes(marks);
     peak = simulate_step(scheme, c, need.after, need.caps_after, base,

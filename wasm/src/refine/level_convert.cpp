@@ -9,10 +9,11 @@ namespace refine {
 
 double level_bytes(double vertices, double edges, double corners, bool marks,
                    bool last) {
-  const double halfedge_tables = 4 * corners + 2 * 4 * edges;  // and corners
-  const double targets = 2 * 4 * edges;
-  return 24 * vertices + 4 * corners + (last ? 0 : halfedge_tables) +
-         (!last || marks ? targets : 0) + (marks ? edges : 0);
+  // Not on the last level: the halfedges of the corners, the halfedges'
+  // corners and targets, and the marks.
+  const double halfedge_tables = 4 * corners + 2 * 4 * edges + 2 * 4 * edges;
+  return 24 * vertices + 4 * corners +
+         (last ? 0 : halfedge_tables + (marks ? edges : 0));
 }
 
 Level level_from_mesh(const Mesh& mesh) {
@@ -162,7 +163,9 @@ Mesh_buffers level_to_buffers(Level&& level) {
     for (std::uint32_t f = 0; f < level.face_count; ++f)
       out.face_sizes[f] = level.face_offsets[f + 1] - level.face_offsets[f];
   }
-  if (!level.edge_marks.empty()) {
+  if (!level.marked_ends.empty()) {
+    out.control_edges = std::move(level.marked_ends);
+  } else if (!level.edge_marks.empty()) {
     std::size_t marked = 0;
     for (std::uint8_t m : level.edge_marks) marked += m;
     out.control_edges.reserve(2 * marked);

@@ -49,11 +49,10 @@ inline std::uint32_t second_half(std::uint32_t x, std::uint32_t E) {
 
 /// What a host builds for a child: every table when it will be refined
 /// again; for the last level only what its buffers need, the face vertices
-/// and, when edges are marked, the halfedge targets (the marks' ends).
+/// and, when edges are marked, the marked edges' ends.
 struct Parts {
   bool halfedges, targets;
-  Parts(const Level& parent, bool last)
-      : halfedges(!last), targets(!last || !parent.edge_marks.empty()) {}
+  explicit Parts(bool last) : halfedges(!last), targets(!last) {}
 };
 
 /// Counts, halfedge targets of the split edges, border halves, marks:
@@ -96,13 +95,33 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
       cc[second_half(x, E)] = kNone;
     }
   }
+  c.marked_ends = {};
   if (p.edge_marks.empty()) {
     c.edge_marks = {};
-  } else {
+  } else if (parts.targets) {
     size_to(c.edge_marks, child_edges);
     std::memcpy(c.edge_marks.data(), p.edge_marks.data(), E);
     std::memcpy(c.edge_marks.data() + E, p.edge_marks.data(), E);
     std::fill(c.edge_marks.begin() + 2 * std::size_t{E}, c.edge_marks.end(), 0);
+  } else {
+    // The last level: a marked edge a-b's halves e (a -> m) and E + e
+    // (m -> b) are the marked edges, the spokes never are.
+    c.edge_marks = {};
+    const std::uint8_t* marks = p.edge_marks.data();
+    const std::uint32_t* pt = p.halfedge_target.data();
+    const auto marked = static_cast<std::size_t>(
+        std::count(p.edge_marks.begin(), p.edge_marks.end(), 1));
+    size_to(c.marked_ends, 4 * marked);
+    std::uint32_t* first = c.marked_ends.data();
+    std::uint32_t* second = first + 2 * marked;
+    for (std::uint32_t e = 0; e < E; ++e) {
+      if (marks[e] == 0) continue;
+      const std::uint32_t m = V + e;
+      *first++ = pt[2 * e + 1];
+      *first++ = m;
+      *second++ = m;
+      *second++ = pt[2 * e];
+    }
   }
 }
 
@@ -127,7 +146,7 @@ inline void put_face(Level& c, std::uint32_t face, const std::uint32_t (&v)[K],
 void refine_pqq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
                       S = p.corner_count();
-  const Parts parts(p, last);
+  const Parts parts(last);
   split_edges(p, c, 2 * E + S, 4 * std::size_t{S}, parts);
   c.vertex_count = V + E + F;
   c.face_count = S;
@@ -178,7 +197,7 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
 
 void refine_ptq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
-  const Parts parts(p, last);
+  const Parts parts(last);
   split_edges(p, c, 2 * E + 3 * F, 12 * std::size_t{F}, parts);
   c.vertex_count = V + E;
   c.face_count = 4 * F;

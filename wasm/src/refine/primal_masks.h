@@ -59,6 +59,16 @@ struct Primal_mask {
   Vertex_weights vertex_weights(std::uint32_t n) const {
     return rule != nullptr ? rule(double(n)) : vertex[n - first_valence];
   }
+  /// Whether a PQQ step must sum a vertex's face points apart from its
+  /// edge neighbours: some valence weighs them differently. The built-in
+  /// rules weigh them alike (Catmull-Clark 1/n^2 both, linear 0 both), so
+  /// one sum per vertex serves both.
+  bool separate_face_sums() const {
+    if (!pqq || rule != nullptr) return false;
+    for (const Vertex_weights& w : vertex)
+      if (w.neighbour != w.face) return true;
+    return false;
+  }
 };
 
 /// The mask of a scheme with a primal fast host: catmull-clark, loop,

@@ -20,8 +20,8 @@ inline void weigh2(double* to, double a, const double* p, double b,
 
 }  // namespace
 
-double primal_scratch_bytes(double vertices, bool pqq, bool border) {
-  return vertices * (24 + (pqq ? 24 : 0) + 4 + (border ? 8 : 0));
+double primal_scratch_bytes(double vertices, bool face_sums, bool border) {
+  return vertices * ((face_sums ? 24 : 0) + 4 + (border ? 8 : 0));
 }
 
 std::uint32_t primal_uncovered_valence(const Level& p, const Primal_mask& mask,
@@ -72,11 +72,13 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
   const bool border = p.border_edge_count > 0;
   size_to(c.positions, 3 * std::size_t{c.vertex_count});
-  size_to(s.ring, 3 * std::size_t{V});
-  std::fill(s.ring.begin(), s.ring.end(), 0.0);
   const double* in = p.positions.data();
   double* out = c.positions.data();
-  double* ring = s.ring.data();
+  // The child's slots of the parent's vertices gather their neighbours'
+  // sums (and, unless weighed apart, their face points') before the
+  // vertex pass weighs them: no per-vertex scratch.
+  double* sum = out;
+  std::fill(sum, sum + 3 * std::size_t{V}, 0.0);
   const std::uint32_t* t = p.halfedge_target.data();
   const std::uint32_t* fv = p.face_vertices.data();
   const std::uint32_t* corner = p.halfedge_corner.data();
@@ -86,9 +88,12 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
   // Faces: centroids, summed at their vertices (PQQ).
   double* face_sum = nullptr;
   if (mask.pqq) {
-    size_to(s.faces, 3 * std::size_t{V});
-    std::fill(s.faces.begin(), s.faces.end(), 0.0);
-    face_sum = s.faces.data();
+    face_sum = sum;
+    if (mask.separate_face_sums()) {
+      size_to(s.faces, 3 * std::size_t{V});
+      std::fill(s.faces.begin(), s.faces.end(), 0.0);
+      face_sum = s.faces.data();
+    }
     double* face_point = out + 3 * (std::size_t{V} + E);
     for (std::uint32_t f = 0; f < F; ++f, face_point += 3) {
       const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
@@ -111,8 +116,8 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
     const std::uint32_t a = t[2 * e + 1], b = t[2 * e];
     const double* pa = in + 3 * std::size_t{a};
     const double* pb = in + 3 * std::size_t{b};
-    add(ring + 3 * std::size_t{a}, pb);
-    add(ring + 3 * std::size_t{b}, pa);
+    add(sum + 3 * std::size_t{a}, pb);
+    add(sum + 3 * std::size_t{b}, pa);
     const std::uint32_t c0 = corner[2 * e], c1 = corner[2 * e + 1];
     if (c0 != kNone && c1 != kNone) {
       const double *w0, *w1;
@@ -145,7 +150,7 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
     }
   }
 
-  // Vertices.
+  // Vertices, in place of their sums.
   const auto& bv = mask.border_vertex;
   const std::uint32_t* valence = s.valence.data();
   const Vertex_weights* weights = s.weights.data();
@@ -160,13 +165,13 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
       continue;
     }
     const Vertex_weights& w = weights[valence[v]];
-    const double* r = ring + 3 * std::size_t{v};
-    if (face_sum != nullptr) {
+    if (face_sum != nullptr && face_sum != sum) {
       const double* q = face_sum + 3 * std::size_t{v};
       for (int i = 0; i < 3; ++i)
-        o[i] = w.self * pv[i] + w.neighbour * r[i] + w.face * q[i];
+        o[i] = w.self * pv[i] + w.neighbour * o[i] + w.face * q[i];
     } else {
-      for (int i = 0; i < 3; ++i) o[i] = w.self * pv[i] + w.neighbour * r[i];
+      // One sum: edge neighbours and (PQQ) face points weigh alike.
+      for (int i = 0; i < 3; ++i) o[i] = w.self * pv[i] + w.neighbour * o[i];
     }
   }
 }

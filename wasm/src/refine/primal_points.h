@@ -1,7 +1,9 @@
 // The points of a primal step: one pass over the parent's faces (face
 // points, and their sums at each vertex), one over its edges (edge points,
-// neighbour sums, valences), one over its vertices. Scatter, not gather:
-// the passes read the parent's tables in order and need no vertex rings.
+// neighbour sums), one over its vertices. Scatter, not gather: the passes
+// read the parent's tables in order and need no vertex rings; the sums
+// gather in the child's slots of the parent's vertices, which the vertex
+// pass then overwrites with the vertex points.
 // Owner: primal_points.cpp.
 #pragma once
 
@@ -17,8 +19,9 @@ namespace refine {
 /// Per-vertex sums a step accumulates; kept between steps so that their
 /// memory is reused.
 struct Primal_scratch {
-  std::vector<double> ring;   ///< 3 per vertex: sum of edge neighbours
-  std::vector<double> faces;  ///< 3 per vertex: sum of face points (PQQ)
+  /// 3 per vertex: sum of face points, for a PQQ mask that weighs them
+  /// apart from the edge neighbours (Primal_mask::separate_face_sums).
+  std::vector<double> faces;
   std::vector<std::uint32_t> valence;
   /// Border chain (border halfedges): the vertex after and before each
   /// border vertex; kNone inside. Filled only when the level has a border.
@@ -26,8 +29,9 @@ struct Primal_scratch {
   std::vector<Vertex_weights> weights;  ///< by valence
 };
 
-/// Bytes of the scratch for a parent with V vertices.
-double primal_scratch_bytes(double vertices, bool pqq, bool border);
+/// Bytes of the scratch for a parent with V vertices (`face_sums`: the
+/// mask sums face points apart).
+double primal_scratch_bytes(double vertices, bool face_sums, bool border);
 
 /// Largest valence of an interior vertex of `parent` that `mask` does not
 /// cover, or 0 when it covers them all (custom tables end somewhere).

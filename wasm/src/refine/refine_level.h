@@ -24,7 +24,8 @@
 //                    halfedge into v (the border one on the border), where
 //                    CGAL's hosts start circulating around v
 //   edge_marks       per-edge data carried to both halves of a split edge
-//                    (control edges today; crease sharpness is its sibling)
+//                    (control edges today; crease sharpness is its sibling);
+//                    the last level lists its marked edges' ends instead
 #pragma once
 
 #include <algorithm>
@@ -47,8 +48,8 @@ struct Level {
   std::vector<std::uint32_t> face_offsets;
   std::vector<std::uint32_t> face_vertices;  ///< one per corner
   /// One per corner. The last level of a run has no halfedge tables
-  /// (face_halfedges, halfedge_corner; halfedge_target only when edges are
-  /// marked): its buffers need none.
+  /// (face_halfedges, halfedge_target, halfedge_corner): its buffers need
+  /// none.
   std::vector<std::uint32_t> face_halfedges;
   std::vector<std::uint32_t> halfedge_target;  ///< 2 * edge_count
   std::vector<std::uint32_t> halfedge_corner;  ///< 2 * edge_count, or kNone
@@ -57,8 +58,13 @@ struct Level {
   std::vector<std::uint32_t> vertex_halfedge;
   /// Edges with a border halfedge; 0 on a closed mesh.
   std::uint32_t border_edge_count = 0;
-  /// One byte per edge (1 = a control edge); empty when not tracked.
+  /// One byte per edge (1 = a control edge); empty when not tracked, and
+  /// on the last level of a run, which has marked_ends instead.
   std::vector<std::uint8_t> edge_marks;
+  /// The last level of a run whose edges are marked: the marked edges'
+  /// ends, source then target, in edge order (the output's control edges),
+  /// so that this level needs neither marks nor halfedge targets.
+  std::vector<std::uint32_t> marked_ends;
   std::vector<double> positions;  ///< x y z per vertex
 
   std::uint32_t corner_count() const {
@@ -89,7 +95,8 @@ void size_to(std::vector<T>& v, std::size_t n) {
 }
 
 /// Bytes the tables of a level with these counts hold (marks included when
-/// `marks`; only the last level's tables when `last`), for the memory model.
+/// `marks`; only the last level's tables when `last`, without its marked
+/// edges' ends), for the memory model.
 double level_bytes(double vertices, double edges, double corners, bool marks,
                    bool last);
 

@@ -226,11 +226,12 @@ void refine_sqrt3_points(const Level& p, const Primal_mask& mask,
   border_step = border_step && p.border_edge_count > 0;
   const bool border = p.border_edge_count > 0;
   size_to(c.positions, 3 * std::size_t{c.vertex_count});
-  size_to(ps.ring, 3 * std::size_t{V});
-  std::fill(ps.ring.begin(), ps.ring.end(), 0.0);
   const double* in = p.positions.data();
   double* out = c.positions.data();
-  double* ring = ps.ring.data();
+  // The neighbour sums gather in the child's slots of the parent's
+  // vertices, which the vertex pass overwrites.
+  double* ring = out;
+  std::fill(ring, ring + 3 * std::size_t{V}, 0.0);
   const std::uint32_t* t = p.halfedge_target.data();
   const std::uint32_t* fv = p.face_vertices.data();
   const std::uint32_t* code = s.face_code.data();
@@ -292,8 +293,7 @@ void refine_sqrt3_points(const Level& p, const Primal_mask& mask,
       continue;
     }
     const Vertex_weights& w = weights[valence[v]];
-    const double* r = ring + 3 * std::size_t{v};
-    for (int i = 0; i < 3; ++i) o[i] = w.self * pv[i] + w.neighbour * r[i];
+    for (int i = 0; i < 3; ++i) o[i] = w.self * pv[i] + w.neighbour * o[i];
   }
 }
 
