@@ -159,8 +159,8 @@ TEST(FastPrimalHosts, FacePointsWeighedApartFromNeighboursEqualCgal) {
     apart.vertex[i] = {(n - 2.5) / n, 0.5 / (n * n), 2 / (n * n)};
   }
   ASSERT_TRUE(refine::primal_mask("custom", apart).mask.separate_face_sums());
-  ASSERT_FALSE(refine::primal_mask("catmull-clark", {}).mask
-                   .separate_face_sums());
+  ASSERT_FALSE(
+      refine::primal_mask("catmull-clark", {}).mask.separate_face_sums());
   for (const char* f : kAnyFaces) expect_cgal_levels("custom", apart, f, false);
 }
 
