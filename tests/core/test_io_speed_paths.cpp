@@ -11,8 +11,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -278,6 +280,80 @@ TEST(IoSpeedPaths, LinesTheFastReaderDeclinesAreReadByTheGeneralOne) {
   EXPECT_EQ(r.status.message,
             "line 6: face 0 declares 3 vertices but the line has 5 more values "
             "(at most 4, a colour, may follow the indices)");
+}
+
+// read_mesh without corner halfedges runs the check alone (8-byte corner
+// records, nothing paired); with them, the numbering check. Both must take
+// and refuse the same meshes with the same words and lines.
+TEST(IoSpeedPaths, TheCheckAloneAndTheNumberingCheckAgree) {
+  std::vector<std::pair<std::string, Mesh_format>> texts;
+  for (const char* name : {"cube.off",
+                           "cube.obj",
+                           "disk-tri.off",
+                           "grid-open.off",
+                           "icosahedron.off",
+                           "mixed-open.off",
+                           "octahedron.off",
+                           "rhombicuboctahedron.off",
+                           "tetrahedron.off",
+                           "torus-quad.off",
+                           "torus-tri.off",
+                           "two-tetrahedra.off",
+                           "invalid/extra-data.off",
+                           "invalid/face-too-small.obj",
+                           "invalid/huge-counts.off",
+                           "invalid/inconsistent-orientation.off",
+                           "invalid/index-out-of-range.off",
+                           "invalid/no-faces.off",
+                           "invalid/non-finite.off",
+                           "invalid/non-manifold-edge.off",
+                           "invalid/non-manifold-vertex.off",
+                           "invalid/non-numeric.obj",
+                           "invalid/repeated-vertex.obj",
+                           "invalid/truncated.off",
+                           "invalid/unknown-header.off"}) {
+    std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
+    ASSERT_TRUE(in.good()) << name;
+    std::stringstream s;
+    s << in.rdbuf();
+    const std::string n = name;
+    texts.emplace_back(s.str(), n.substr(n.size() - 3) == "obj"
+                                    ? Mesh_format::obj
+                                    : Mesh_format::off);
+  }
+  const std::string square =
+      "OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n.5 .5 0\n";
+  // Two fans sharing vertex 4 (a bowtie), an edge of three faces, a face
+  // turned the wrong way, and the square's four triangles (valid, open).
+  texts.push_back(
+      {"OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n.5 .5 0\n"
+       "3 0 1 4\n3 2 3 4\n",
+       Mesh_format::off});
+  texts.push_back(
+      {"OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n.5 .5 0\n"
+       "3 0 1 2\n3 1 0 3\n3 0 1 4\n",
+       Mesh_format::off});
+  texts.push_back(
+      {square + "3 0 1 4\n3 1 2 4\n3 2 4 3\n3 3 0 4\n", Mesh_format::off});
+  texts.push_back(
+      {square + "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n", Mesh_format::off});
+  int refused = 0;
+  for (const auto& [text, format] : texts) {
+    const Result<Mesh_buffers> alone = read_mesh(text, format);
+    std::vector<std::uint32_t> halfedges;
+    const Result<Mesh_buffers> numbered = read_mesh(text, format, &halfedges);
+    EXPECT_EQ(alone.status.code, numbered.status.code) << text;
+    EXPECT_EQ(alone.status.message, numbered.status.message) << text;
+    EXPECT_EQ(alone.status.line, numbered.status.line) << text;
+    EXPECT_EQ(alone.value.positions, numbered.value.positions) << text;
+    EXPECT_EQ(alone.value.face_indices, numbered.value.face_indices) << text;
+    if (alone.ok()) {
+      EXPECT_EQ(halfedges.size(), alone.value.face_indices.size()) << text;
+    } else {
+      ++refused;
+    }
+  }
+  EXPECT_EQ(refused, 13 + 3);
 }
 
 }  // namespace

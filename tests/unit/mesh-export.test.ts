@@ -1,4 +1,6 @@
 /** Writing in pieces (writeMesh, exportMeshChunks) and reading from bytes, through the real WASM core. */
+import { readdirSync } from 'node:fs';
+import { join } from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import type { Mesh } from '../../web/core/mesh';
@@ -6,13 +8,15 @@ import {
   DEFAULT_CHUNK_BYTES,
   exportMesh,
   exportMeshChunks,
+  formatFromFileName,
   meshFacts,
+  parseForView,
   parseMesh,
   subdivide,
   writeMesh,
 } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
-import { expectSamePoints, fixtureText, loadFixture } from './test-helpers';
+import { expectSamePoints, FIXTURES_DIR, fixtureText, loadFixture } from './test-helpers';
 
 beforeAll(async () => {
   await initNode();
@@ -149,5 +153,76 @@ describe('reading bytes', () => {
     expect(error).toBeInstanceOf(SubdivError);
     expect((error as SubdivError).line).toBe(5);
     expect((error as SubdivError).message).toBe("line 5: z coordinate of vertex 2 is not a number: 'zz'");
+  });
+});
+
+/** parseMesh's outcome as plain data: the mesh's arrays, or the error's code, line and message. */
+function outcome(input: string | Uint8Array, format: 'off' | 'obj'): unknown {
+  try {
+    const mesh = parseMesh(input, format);
+    return { positions: Array.from(mesh.positions), faceIndices: Array.from(mesh.faceIndices) };
+  } catch (e) {
+    const error = e as SubdivError;
+    return { code: error.code, line: error.line, message: error.message };
+  }
+}
+
+describe('text into the heap (strings encoded by the engine, bytes copied by it)', () => {
+  it('gives the same mesh or the same error from a string and from its bytes, on every fixture', () => {
+    const names = [
+      ...readdirSync(FIXTURES_DIR).filter((n) => formatFromFileName(n)),
+      ...readdirSync(join(FIXTURES_DIR, 'invalid')).map((n) => join('invalid', n)),
+    ];
+    expect(names.length).toBe(25);
+    let errors = 0;
+    for (const name of names) {
+      const format = formatFromFileName(name) ?? 'off';
+      const text = fixtureText(name);
+      const fromText = outcome(text, format);
+      expect(outcome(new TextEncoder().encode(text), format), name).toEqual(fromText);
+      if ('code' in (fromText as object)) errors++;
+    }
+    expect(errors).toBe(readdirSync(join(FIXTURES_DIR, 'invalid')).length);
+  });
+
+  it('reads a string with characters beyond ASCII, and quotes them in a message on the right line', () => {
+    const ok = 'OFF # caf\u00e9 \u{1F600}\n3 1 0\n0 0 0\n1 0 0 # \u00e9t\u00e9\n0 1 0\n3 0 1 2\n';
+    const mesh = parseMesh(ok, 'off');
+    expect(Array.from(mesh.positions)).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    expect(Array.from(mesh.faceIndices)).toEqual([0, 1, 2]);
+    const bad = 'v 0 0 0 # \u00fc\nv 1 0 0\nv 0 1 \u00e9\u{1F600}\nf 1 2 3\n';
+    expect(outcome(bad, 'obj')).toEqual({
+      code: 'parse_error',
+      line: 3,
+      message: "line 3: z coordinate of vertex 3 is not a number: '\u00e9\u{1F600}'",
+    });
+    expect(outcome(new TextEncoder().encode(bad), 'obj')).toEqual(outcome(bad, 'obj'));
+  });
+
+  it('takes an ArrayBuffer, an empty string, and refuses what is not text', () => {
+    const text = 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n';
+    const bytes = new TextEncoder().encode(text);
+    const copy = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
+    expect(Array.from(parseMesh(copy as unknown as Uint8Array, 'off').faceIndices)).toEqual([0, 1, 2]);
+    expect(outcome('', 'off')).toEqual({
+      code: 'parse_error',
+      line: 0,
+      message: 'the file is empty: no OFF header',
+    });
+    expect(outcome(42 as unknown as string, 'off')).toEqual({
+      code: 'invalid_argument',
+      line: 0,
+      message: 'The mesh text must be a string, a Uint8Array or an ArrayBuffer.',
+    });
+    expect(outcome(new Float64Array(3) as unknown as Uint8Array, 'off')).toMatchObject({ code: 'invalid_argument' });
+  });
+
+  it('feeds parseForView the same way', () => {
+    const text = fixtureText('cube.obj');
+    const fromText = parseForView(text, 'obj');
+    const fromBytes = parseForView(new TextEncoder().encode(text), 'obj');
+    expect(fromText.facts).toEqual(fromBytes.facts);
+    expect(fromText.facts).toMatchObject({ vertices: 8, faces: 6 });
+    expect(Array.from(fromText.mesh.faceIndices)).toEqual(Array.from(fromBytes.mesh.faceIndices));
   });
 });

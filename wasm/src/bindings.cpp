@@ -17,8 +17,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -87,6 +89,74 @@ Mesh_buffers from_js_mesh(const val& mesh) {
   out.face_indices = from_js_array<std::uint32_t>(mesh, "faceIndices");
   out.control_edges = from_js_array<std::uint32_t>(mesh, "controlEdges");
   return out;
+}
+
+/// The UTF-8 bytes of a JS string or byte array, in the heap. The engine
+/// writes them there itself (TextEncoder.encodeInto, TypedArray.set): a JS
+/// string or Uint8Array given as std::string would cross in embind's loop,
+/// one byte per iteration, and be copied again into the string.
+struct Js_text {
+  std::unique_ptr<char[]> bytes;  // not zeroed: every byte is written
+  std::size_t size = 0;
+  std::string_view view() const { return {bytes.get(), size}; }
+};
+
+/// `written` bytes of `text` from its UTF-16 unit `from` on, encoded at
+/// `out` (room for `room` bytes); returns the units read.
+std::size_t encode_into(const val& text, std::size_t from, char* out,
+                        std::size_t room, std::size_t& written) {
+  static const val encoder = val::global("TextEncoder").new_();
+  const val rest = from == 0 ? text : text.call<val>("substring", from);
+  const val done =
+      encoder.call<val>("encodeInto", rest,
+                        val(emscripten::typed_memory_view(
+                            room, reinterpret_cast<unsigned char*>(out))));
+  written = done["written"].as<std::size_t>();
+  return done["read"].as<std::size_t>();
+}
+
+/// Reads a string (as UTF-8), a Uint8Array or another byte view, or an
+/// ArrayBuffer; false for anything else.
+bool from_js_text(const val& text, Js_text& out) {
+  if (text.isString()) {
+    // One byte per UTF-16 unit holds ASCII; anything else is re-encoded
+    // from where it stopped, with the 3 bytes a unit may take.
+    const std::size_t units = text["length"].as<std::size_t>();
+    out.bytes.reset(new char[units + 1]);
+    std::size_t written = 0;
+    const std::size_t read =
+        encode_into(text, 0, out.bytes.get(), units, written);
+    out.size = written;
+    if (read < units) {
+      const std::size_t room = 3 * (units - read);
+      std::unique_ptr<char[]> wider(new char[written + room]);
+      std::memcpy(wider.get(), out.bytes.get(), written);
+      out.bytes = std::move(wider);
+      std::size_t more = 0;
+      encode_into(text, read, out.bytes.get() + written, room, more);
+      out.size += more;
+    }
+    return true;
+  }
+  val bytes = text;
+  if (text.instanceof (val::global("ArrayBuffer"))) {
+    bytes = val::global("Uint8Array").new_(text);
+  } else if (!val::global("ArrayBuffer").call<bool>("isView", text) ||
+             bytes["BYTES_PER_ELEMENT"].as<int>() != 1) {
+    return false;
+  }
+  out.size = bytes["length"].as<std::size_t>();
+  out.bytes.reset(new char[out.size + 1]);
+  val(emscripten::typed_memory_view(
+          out.size, reinterpret_cast<unsigned char*>(out.bytes.get())))
+      .call<void>("set", bytes);
+  return true;
+}
+
+Status not_text() {
+  return Status::error(
+      Status_code::invalid_argument,
+      "The mesh text must be a string, a Uint8Array or an ArrayBuffer.");
 }
 
 bool parse_format(const std::string& name, Mesh_format& format) {
@@ -262,12 +332,14 @@ val guarded(Body body) {
   }
 }
 
-val js_read_mesh(const std::string& text, const std::string& format_name) {
+val js_read_mesh(const val& js_text, const std::string& format_name) {
   return guarded([&] {
     Mesh_format format;
     if (!parse_format(format_name, format))
       return to_js_status(unknown_format(format_name));
-    const Result<Mesh_buffers> result = read_mesh(text, format);
+    Js_text text;
+    if (!from_js_text(js_text, text)) return to_js_status(not_text());
+    const Result<Mesh_buffers> result = read_mesh(text.view(), format);
     if (!result.ok()) return to_js_status(result.status);
     val out = ok_object();
     out.set("mesh", to_js_mesh(result.value));
@@ -440,14 +512,16 @@ val js_view_mesh(const val& mesh) {
 }
 
 /// { mesh, facts, buffers } of OFF/OBJ text (as read_mesh takes it).
-val js_read_view(const std::string& text, const std::string& format_name) {
+val js_read_view(const val& js_text, const std::string& format_name) {
   return guarded([&] {
     Mesh_format format;
     if (!parse_format(format_name, format))
       return to_js_status(unknown_format(format_name));
+    Js_text text;
+    if (!from_js_text(js_text, text)) return to_js_status(not_text());
     Mesh_buffers mesh;
     Js_render_sink sink;
-    const Result<Mesh_facts> facts = read_view(text, format, mesh, sink);
+    const Result<Mesh_facts> facts = read_view(text.view(), format, mesh, sink);
     if (!facts.ok()) return to_js_status(facts.status);
     val out = ok_object();
     out.set("mesh", to_js_mesh(mesh));

@@ -28,7 +28,7 @@ type RawResult<T> = ({ ok: true } & T) | RawFailure;
 
 /** What bindings.cpp registers; every call returns a result object, never throws. */
 interface CoreModule {
-  /** Embind takes a string (encoded by a JS loop) or the UTF-8 bytes (one copy). */
+  /** A string or its UTF-8 bytes: bindings.cpp has the engine write them into the heap (encodeInto, set). */
   read_mesh(text: string | Uint8Array, format: string): RawResult<{ mesh: Mesh }>;
   write_mesh(
     mesh: Mesh,
@@ -120,16 +120,12 @@ function unwrap<T>(result: RawResult<T>): T {
   return result;
 }
 
-const encoder = new TextEncoder();
-
 /**
  * Parses OFF or OBJ text, or its UTF-8 bytes, into a checked mesh (a valid
  * oriented 2-manifold polygon mesh).
  */
 export function parseMesh(text: string | Uint8Array, format: MeshFormat): Mesh {
-  // TextEncoder is native; embind's own string conversion is a JS loop.
-  const bytes = typeof text === 'string' ? encoder.encode(text) : text;
-  return unwrap(module().read_mesh(bytes, format)).mesh;
+  return unwrap(module().read_mesh(text, format)).mesh;
 }
 
 /**
@@ -138,8 +134,7 @@ export function parseMesh(text: string | Uint8Array, format: MeshFormat): Mesh {
  * mesh checked once.
  */
 export function parseForView(text: string | Uint8Array, format: MeshFormat): LevelView {
-  const bytes = typeof text === 'string' ? encoder.encode(text) : text;
-  const { mesh, facts, buffers } = unwrap(module().read_view(bytes, format));
+  const { mesh, facts, buffers } = unwrap(module().read_view(text, format));
   return { mesh, facts, buffers };
 }
 

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -96,6 +98,19 @@ struct Half_edge {
   std::uint32_t corner;
 };
 
+/// A corner leaving its vertex, as manifold_fast lists it: the vertex it
+/// goes to and the one the corner before it comes from; with `Numbered`,
+/// also the corner itself and the one before it (arriving), to pair them.
+template <bool Numbered>
+struct Leaving {
+  std::uint32_t to, from;
+};
+template <>
+struct Leaving<true> {
+  std::uint32_t to, from;
+  std::uint32_t corner, arriving;
+};
+
 /// The edge and vertex checks of check_buffers, fast, on faces that passed
 /// theirs: true when every edge joins at most two faces in opposite
 /// directions and every vertex's faces form one fan, with each corner's
@@ -114,7 +129,9 @@ struct Half_edge {
 /// marked in a table by vertex (stamped with v), and the chain is walked in
 /// v's own list, so that the work is linear in the corners whatever the
 /// valences (a fan of a million triangles included) and mostly reads the
-/// list in order.
+/// list in order. `Numbered` (corner_halfedges given) also pairs the corners
+/// and numbers their halfedges; without it only the checks run.
+template <bool Numbered>
 bool manifold_fast(const std::vector<std::uint32_t>& sizes,
                    const std::vector<std::uint32_t>& idx, std::size_t nv,
                    std::vector<std::uint32_t>* corner_halfedges) {
@@ -123,11 +140,11 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   std::vector<std::uint32_t> start(nv + 1, 0);
   for (std::uint32_t v : idx) ++start[v + 1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  struct Leaving {
-    std::uint32_t to, corner;
-    std::uint32_t from, arriving;  ///< the corner before: from -> v
-  };
-  std::vector<Leaving> leaving(corners);
+  // Not zeroed: every entry is written by the counting sort. Without
+  // numbering an entry is 8 bytes, and the check alone (read_mesh) moves
+  // half the memory.
+  const std::unique_ptr<Leaving<Numbered>[]> leaving(
+      new Leaving<Numbered>[corners]);
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     std::uint32_t o = 0;
@@ -136,32 +153,44 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
         const std::uint32_t c = o + i;
         const std::uint32_t n = i + 1 == k ? o : c + 1;
         const std::uint32_t p = i == 0 ? o + k - 1 : c - 1;
-        leaving[fill[idx[c]]++] = {idx[n], c, idx[p], p};
+        Leaving<Numbered>& l = leaving[fill[idx[c]]++];
+        l.to = idx[n];
+        l.from = idx[p];
+        if constexpr (Numbered) {
+          l.corner = c;
+          l.arriving = p;
+        }
       }
       o += k;
     }
   }
-  std::vector<std::uint32_t> opposite(corners, none);
-  std::vector<std::uint32_t> stamp(nv, none), at(nv);
+  std::vector<std::uint32_t> opposite(Numbered ? corners : 0, none);
+  // Per vertex: the vertex stamp it was last marked for and its position in
+  // that vertex's list, side by side (one cache line per lookup).
+  struct Mark {
+    std::uint32_t stamp, at;
+  };
+  std::vector<Mark> mark(nv, Mark{none, 0});
   // The chain at the vertex at hand, by position in its list.
   std::vector<std::uint32_t> step;
   std::vector<std::uint8_t> led_to;
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t b = start[v], e = start[v + 1], n = e - b;
-    const std::uint32_t mark = static_cast<std::uint32_t>(v);
+    const std::uint32_t stamp = static_cast<std::uint32_t>(v);
     for (std::uint32_t i = b; i < e; ++i) {
-      const std::uint32_t to = leaving[i].to;
-      if (stamp[to] == mark) return false;
-      stamp[to] = mark;
-      at[to] = i - b;
+      Mark& m = mark[leaving[i].to];
+      if (m.stamp == stamp) return false;
+      m = Mark{stamp, i - b};
     }
+    if (n < 2 && !Numbered) continue;
     step.assign(n, none);
     led_to.assign(n, 0);
     for (std::uint32_t i = b; i < e; ++i) {
-      const std::uint32_t a = leaving[i].from;
-      if (stamp[a] != mark) continue;  // a border edge arrives here
-      const std::uint32_t j = at[a];
-      opposite[leaving[i].arriving] = leaving[b + j].corner;
+      const Mark m = mark[leaving[i].from];
+      if (m.stamp != stamp) continue;  // a border edge arrives here
+      const std::uint32_t j = m.at;
+      if constexpr (Numbered)
+        opposite[leaving[i].arriving] = leaving[b + j].corner;
       step[i - b] = j;
       led_to[j] = 1;
     }
@@ -178,7 +207,7 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
     }
     if (walked != n) return false;
   }
-  if (corner_halfedges != nullptr) {
+  if constexpr (Numbered) {
     std::vector<std::uint32_t>& out = *corner_halfedges;
     out.resize(corners);
     std::uint32_t edges = 0;
@@ -272,7 +301,10 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
       o += k;
     }
   }
-  if (manifold_fast(sizes, idx, nv, corner_halfedges)) return {};
+  if (corner_halfedges != nullptr
+          ? manifold_fast<true>(sizes, idx, nv, corner_halfedges)
+          : manifold_fast<false>(sizes, idx, nv, nullptr))
+    return {};
 
   std::vector<std::uint32_t> face_of(idx.size());
   for (std::size_t f = 0; f < sizes.size(); ++f) {
