@@ -5,6 +5,7 @@
  * (never ./generated/), answers one request at a time and transfers results.
  */
 import type { Mesh, MeshFacts, RenderBuffers } from './mesh';
+import { signedVolume } from './signed-volume';
 import {
   checkRules,
   exportMeshChunks,
@@ -51,7 +52,16 @@ function keptLevel(handle: LevelHandle): { mesh: Mesh; facts: MeshFacts } {
 
 /** Keeps the mesh; the page gets the rest, its control edges as a copy (the kept mesh keeps its own). */
 function levelData(mesh: Mesh, facts: MeshFacts, buffers: RenderBuffers, ms: number): LevelData {
-  return { handle: keep(mesh, facts), facts, buffers, controlEdges: mesh.controlEdges.slice(), ms };
+  // Here rather than on the page: a pass over a million triangles is a frame's worth of time.
+  const volume = facts.closed ? signedVolume(buffers.positions, buffers.triangles) : 0;
+  return {
+    handle: keep(mesh, facts),
+    facts,
+    buffers,
+    controlEdges: mesh.controlEdges.slice(),
+    ms,
+    signedVolume: volume,
+  };
 }
 
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */

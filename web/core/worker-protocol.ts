@@ -28,6 +28,11 @@ export interface LevelData {
   controlEdges: Uint32Array;
   /** Milliseconds the core spent on the step, its facts and render buffers included (0 for a loaded mesh). */
   ms: number;
+  /**
+   * Signed volume of a closed level (0 for an open one): positive when its faces' normals point out,
+   * negative when they point in. The view draws only the faces turned to the camera on a closed level.
+   */
+  signedVolume: number;
 }
 
 /** Requests the worker understands, by kind. */

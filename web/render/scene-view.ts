@@ -163,6 +163,13 @@ export class SceneView {
   setLevel(graphics: LevelGraphics | null): void {
     if (graphics) {
       this.surface.geometry = graphics.surface;
+      for (const material of [this.smoothMaterial, this.flatMaterial]) {
+        // The side is part of the shader (three's DOUBLE_SIDED / FLIP_SIDED): recompiled when it changes.
+        if (material.side !== graphics.side) {
+          material.side = graphics.side;
+          material.needsUpdate = true;
+        }
+      }
       this.edgeLines.geometry = graphics.edges;
       if (graphics.curves) this.curveLines.geometry = graphics.curves;
     }

@@ -470,7 +470,8 @@ export class SubdivViewer {
   }
 
   private graphicsOf(level: Level): LevelGraphics {
-    if (!level.graphics) level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges);
+    if (!level.graphics)
+      level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges, level.data.signedVolume);
     return level.graphics;
   }
 
