@@ -29,10 +29,10 @@ export interface LevelData {
   /** Milliseconds the core spent on the step, its facts and render buffers included (0 for a loaded mesh). */
   ms: number;
   /**
-   * Signed volume of a closed level (0 for an open one): positive when its faces' normals point out,
-   * negative when they point in. The view draws only the faces turned to the camera on a closed level.
+   * Which way the faces of a closed, one-piece level turn (+1 outward, −1 inward; 0: open, several
+   * pieces or flat). The view then draws only the faces turned to the camera.
    */
-  signedVolume: number;
+  orientation: -1 | 0 | 1;
 }
 
 /** Requests the worker understands, by kind. */

@@ -471,7 +471,7 @@ export class SubdivViewer {
 
   private graphicsOf(level: Level): LevelGraphics {
     if (!level.graphics)
-      level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges, level.data.signedVolume);
+      level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges, level.data.orientation);
     return level.graphics;
   }
 
