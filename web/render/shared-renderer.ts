@@ -49,8 +49,6 @@ export class SharedRenderer {
   private readonly uploadScene = new Scene();
   private readonly uploadCamera = new OrthographicCamera();
   private readonly uploadMesh = new Mesh(undefined, new MeshBasicMaterial());
-  /** The helper's shader is ready. */
-  private uploadReady = false;
 
   constructor() {
     this.renderer = new WebGLRenderer({ antialias: true, alpha: true });
@@ -62,14 +60,8 @@ export class SharedRenderer {
     // No bounding sphere (a pass over every vertex): the mesh draws nothing anyway.
     this.uploadMesh.frustumCulled = false;
     this.uploadScene.add(this.uploadMesh);
-    // Its shader compiled beside the page (a first use that waits for the link would block a frame);
-    // until then, draws upload what they need themselves.
-    this.renderer.compileAsync(this.uploadScene, this.uploadCamera).then(
-      () => {
-        this.uploadReady = true;
-      },
-      () => {},
-    );
+    // Its shader, given to the GPU process now: linked long before a first use would wait for it.
+    this.renderer.compile(this.uploadScene, this.uploadCamera);
     // Views work in device pixels themselves.
     this.renderer.setPixelRatio(1);
     this.renderer.setSize(this.width, this.height, false);
@@ -133,7 +125,6 @@ export class SharedRenderer {
     }
     for (const { attribute } of pending) this.onGpu.add(attribute);
     if (total <= UPLOAD_BYTES_PER_FRAME) return false;
-    if (!this.uploadReady) return false;
     let sent = 0;
     for (const [i, entry] of pending.entries()) {
       if (sent > 0 && sent + bytesOf(entry.attribute) > UPLOAD_BYTES_PER_FRAME) {
