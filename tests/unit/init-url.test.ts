@@ -8,7 +8,10 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { init, isReady, schemeNames } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
 
-const WASM = join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'web', 'core', 'generated', 'subdivlab.wasm');
+// The module vitest loads (its test build: vitest.config.ts), whose glue subdiv-core.ts has here.
+const WASM =
+  process.env.SUBDIVLAB_WASM ??
+  join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'web', 'core', 'generated', 'subdivlab.wasm');
 let server: Server;
 let base = '';
 let requests = 0;

@@ -603,6 +603,10 @@ val js_scheme_info() {
   });
 }
 
+#ifdef SUBDIVLAB_TEST_HOOKS
+// Test hooks: only in the test build of the module (target subdivlab_test,
+// which vitest loads), never in the one the app and the CLI ship.
+
 /// Throws what `kind` names ("cgal", "std", "alloc", anything else: an int)
 /// inside the same guard as every export: lets the tests prove that such a
 /// failure comes back as an error object and that the instance lives on.
@@ -628,6 +632,7 @@ val js_throw_for_test(const std::string& kind) {
 double js_heap_in_use() {
   return static_cast<double>(static_cast<unsigned int>(mallinfo().uordblks));
 }
+#endif  // SUBDIVLAB_TEST_HOOKS
 
 }  // namespace
 }  // namespace subdivlab
@@ -646,6 +651,8 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("scheme_names", &subdivlab::js_scheme_names);
   emscripten::function("scheme_info", &subdivlab::js_scheme_info);
   emscripten::function("check_rules", &subdivlab::js_check_rules);
+#ifdef SUBDIVLAB_TEST_HOOKS
   emscripten::function("heap_in_use", &subdivlab::js_heap_in_use);
   emscripten::function("throw_for_test", &subdivlab::js_throw_for_test);
+#endif
 }

@@ -25,11 +25,16 @@ function wasmCandidates(): string[] {
 }
 
 /**
- * Loads the core in Node. `wasmPath` overrides the search; the module is
- * built by `node scripts/setup.mjs` (or `npm run build:wasm`).
+ * Loads the core in Node. `wasmPath` overrides the search, then
+ * SUBDIVLAB_WASM under vitest (vitest.config.ts names the test build of
+ * the module there, whose glue it also puts in place of the shipped one:
+ * the shipped module has no test hooks); the module is built by
+ * `node scripts/setup.mjs` (or `npm run build:wasm`).
  */
 export async function initNode(wasmPath?: string): Promise<void> {
-  const path = wasmPath ?? wasmCandidates().find((p) => existsSync(p));
+  // Read where vitest transforms this file (from process.env); a bundle (the CLI) has it replaced by nothing.
+  const testBuild: string | undefined = import.meta.env?.SUBDIVLAB_WASM;
+  const path = wasmPath ?? testBuild ?? wasmCandidates().find((p) => existsSync(p));
   if (!path) {
     throw new Error(`${WASM_NAME} not found (looked in ${wasmCandidates().join(', ')}); run npm run build:wasm`);
   }

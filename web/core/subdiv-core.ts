@@ -45,8 +45,9 @@ interface CoreModule {
   scheme_names(): RawResult<{ names: string[] }>;
   scheme_info(): RawResult<CoreSchemeInfo>;
   check_rules(rules: CompiledRules): RawResult<object>;
-  heap_in_use(): number;
-  throw_for_test(kind: string): RawFailure;
+  /** Test hooks: only in the test build of the module (wasm target subdivlab_test). */
+  heap_in_use?(): number;
+  throw_for_test?(kind: string): RawFailure;
 }
 
 let core: CoreModule | null = null;
@@ -301,7 +302,7 @@ export function hostOf(scheme: string, rules?: RuleSet | null): HostInfo | undef
 
 /** Bytes allocated in the WebAssembly heap right now (for leak checks). */
 export function heapBytesInUse(): number {
-  return module().heap_in_use();
+  return testHook('heap_in_use')();
 }
 
 /**
@@ -310,8 +311,15 @@ export function heapBytesInUse(): number {
  * something else (`'other'`), and throws the SubdivError it comes back as.
  */
 export function throwForTesting(kind: 'cgal' | 'std' | 'alloc' | 'other'): never {
-  unwrap(module().throw_for_test(kind));
+  unwrap(testHook('throw_for_test')(kind));
   throw new Error('throw_for_test returned without an error');
+}
+
+/** A test hook of the module, which only its test build has (the one vitest loads). */
+function testHook<K extends 'heap_in_use' | 'throw_for_test'>(name: K): NonNullable<CoreModule[K]> {
+  const hook = module()[name];
+  if (!hook) throw new Error(`${name} is a test hook: load the test build of the core (build/wasm/test-module/)`);
+  return hook.bind(module()) as NonNullable<CoreModule[K]>;
 }
 
 /** `'off'` or `'obj'` from a file name's extension (any case), otherwise null. */

@@ -5,6 +5,7 @@
  * (never ./generated/), answers one request at a time and transfers results.
  */
 import type { Mesh, MeshFacts, RenderBuffers } from './mesh';
+import { orientation } from './orientation';
 import {
   checkRules,
   exportMeshChunks,
@@ -33,25 +34,40 @@ interface WorkerScope {
 const scope = self as unknown as WorkerScope;
 
 /** The levels kept for the page, by handle id; `epoch` is this worker's, from init. */
-const kept = new Map<number, { mesh: Mesh; facts: MeshFacts }>();
+const kept = new Map<number, KeptLevel>();
 let epoch = -1;
 let nextId = 1;
 
-function keep(mesh: Mesh, facts: MeshFacts): LevelHandle {
+interface KeptLevel {
+  mesh: Mesh;
+  facts: MeshFacts;
+  /** Worked out once for level 0: every scheme keeps the way faces turn. */
+  orientation: -1 | 0 | 1;
+}
+
+function keep(level: KeptLevel): LevelHandle {
   const id = nextId++;
-  kept.set(id, { mesh, facts });
+  kept.set(id, level);
   return { epoch, id };
 }
 
-function keptLevel(handle: LevelHandle): { mesh: Mesh; facts: MeshFacts } {
+function keptLevel(handle: LevelHandle): KeptLevel {
   const level = handle.epoch === epoch ? kept.get(handle.id) : undefined;
   if (!level) throw new SubdivError('internal_error', `Level ${handle.epoch}/${handle.id} is not kept by the core.`);
   return level;
 }
 
 /** Keeps the mesh; the page gets the rest, its control edges as a copy (the kept mesh keeps its own). */
-function levelData(mesh: Mesh, facts: MeshFacts, buffers: RenderBuffers, ms: number): LevelData {
-  return { handle: keep(mesh, facts), facts, buffers, controlEdges: mesh.controlEdges.slice(), ms };
+function levelData(level: KeptLevel, buffers: RenderBuffers, ms: number): LevelData {
+  const { mesh, facts } = level;
+  return {
+    handle: keep(level),
+    facts,
+    buffers,
+    controlEdges: mesh.controlEdges.slice(),
+    ms,
+    orientation: level.orientation,
+  };
 }
 
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
@@ -90,25 +106,25 @@ const handlers: Handlers = {
   async parse({ text, format }) {
     await init();
     const { mesh, facts, buffers } = parseForView(text, format);
-    const level = levelData(mesh, facts, buffers, 0);
+    const level = levelData({ mesh, facts, orientation: orientation(mesh, facts) }, buffers, 0);
     const copy = copyOf(mesh);
     return { value: { level, mesh: copy }, transfer: [...buffersOf(level), ...meshBuffers(copy)] };
   },
   async prepare({ mesh }) {
     await init();
     const { facts, buffers } = viewMesh(mesh);
-    const level = levelData(mesh, facts, buffers, 0);
+    const level = levelData({ mesh, facts, orientation: orientation(mesh, facts) }, buffers, 0);
     return { value: level, transfer: buffersOf(level) };
   },
   async keep({ mesh, facts }) {
-    return { value: keep(mesh, facts), transfer: [] };
+    return { value: keep({ mesh, facts, orientation: orientation(mesh, facts) }), transfer: [] };
   },
   async subdivide({ handle, options }) {
     await init();
     const parent = keptLevel(handle);
     const start = performance.now();
     const { mesh, facts, buffers } = subdivideForView(parent.mesh, options, parent.facts);
-    const level = levelData(mesh, facts, buffers, performance.now() - start);
+    const level = levelData({ mesh, facts, orientation: parent.orientation }, buffers, performance.now() - start);
     return { value: level, transfer: buffersOf(level) };
   },
   async predict({ handle, options }) {

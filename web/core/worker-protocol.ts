@@ -28,6 +28,11 @@ export interface LevelData {
   controlEdges: Uint32Array;
   /** Milliseconds the core spent on the step, its facts and render buffers included (0 for a loaded mesh). */
   ms: number;
+  /**
+   * Which way the faces of a closed, one-piece level turn (+1 outward, −1 inward; 0: open, several
+   * pieces or flat). The view then draws only the faces turned to the camera.
+   */
+  orientation: -1 | 0 | 1;
 }
 
 /** Requests the worker understands, by kind. */

@@ -4,18 +4,57 @@
  * edges (so quads are drawn as quads, never as triangle pairs). Both share
  * one position attribute. Call dispose() when the level is dropped.
  */
-import { BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
+import { BackSide, BufferAttribute, BufferGeometry, DoubleSide, FrontSide, type Side, Sphere, Vector3 } from 'three';
 import type { RenderBuffers } from '../core/mesh';
+
+/**
+ * Bytes of index one draw call takes at most: a larger surface or edge
+ * list is drawn in parts (the same triangles in the same order), so that
+ * each part's index goes to the GPU in a frame of its own.
+ */
+export const PART_INDEX_BYTES = 8 * 1024 * 1024;
+
+/** `whole` as geometries of at most `per` indices each, sharing its attributes (itself when it fits). */
+function partsOf(whole: BufferGeometry, index: Uint32Array, per: number): BufferGeometry[] {
+  if (index.length <= per) return [whole];
+  const parts: BufferGeometry[] = [];
+  for (let start = 0; start < index.length; start += per) {
+    const part = new BufferGeometry();
+    for (const [name, attribute] of Object.entries(whole.attributes)) part.setAttribute(name, attribute);
+    // A view, not a copy: WebGL uploads the view's bytes.
+    part.setIndex(new BufferAttribute(index.subarray(start, start + per), 1));
+    part.boundingSphere = (whole.boundingSphere as Sphere).clone();
+    parts.push(part);
+  }
+  return parts;
+}
 
 export class LevelGraphics {
   /** Fanned polygons with the core's smooth vertex normals (flat shading is a material switch). */
   readonly surface: BufferGeometry;
+  /** {@link surface} as the view draws it: one geometry, or parts of at most {@link PART_INDEX_BYTES} of index. */
+  readonly surfaceParts: BufferGeometry[];
   /** Polygon edges as line segments. */
   readonly edges: BufferGeometry;
+  /** {@link edges} in parts, as {@link surfaceParts}. */
+  readonly edgeParts: BufferGeometry[];
   /** The marked control edges of this level (null when the core marked none). */
   readonly curves: BufferGeometry | null;
+  /**
+   * The faces the surface draws. A closed surface hides the faces turned
+   * away from the camera behind those turned towards it, so only the latter
+   * are drawn (the same picture; software rasterisers, as in headless
+   * Chromium, spend a third less on a million triangles); an open one shows
+   * both sides.
+   */
+  readonly side: Side;
 
-  constructor(buffers: RenderBuffers, controlEdges: Uint32Array = new Uint32Array(0)) {
+  /**
+   * `orientation`: +1 (−1) when the level is closed and its faces turn
+   * outward (inward); 0 draws both sides.
+   */
+  constructor(buffers: RenderBuffers, controlEdges: Uint32Array = new Uint32Array(0), orientation: -1 | 0 | 1 = 0) {
+    this.side = orientation > 0 ? FrontSide : orientation < 0 ? BackSide : DoubleSide;
     const position = new BufferAttribute(buffers.positions, 3);
     this.surface = new BufferGeometry();
     this.surface.setAttribute('position', position);
@@ -30,6 +69,10 @@ export class LevelGraphics {
     this.edges.setAttribute('position', position);
     this.edges.setIndex(new BufferAttribute(buffers.edges, 1));
     this.edges.boundingSphere = sphere.clone();
+    // Whole triangles and whole segments per part.
+    const perPart = PART_INDEX_BYTES / 4;
+    this.surfaceParts = partsOf(this.surface, buffers.triangles, perPart - (perPart % 3));
+    this.edgeParts = partsOf(this.edges, buffers.edges, perPart - (perPart % 2));
 
     this.curves = null;
     if (controlEdges.length > 0) {
@@ -47,6 +90,8 @@ export class LevelGraphics {
 
   /** Frees both geometries on the GPU. */
   dispose(): void {
+    // Each part's index first (disposing a geometry frees its attributes on the GPU), then the wholes.
+    for (const part of [...this.surfaceParts, ...this.edgeParts]) part.dispose();
     this.surface.dispose();
     this.edges.dispose();
     this.curves?.dispose();

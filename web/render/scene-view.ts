@@ -10,6 +10,7 @@ import {
   AmbientLight,
   Box3,
   Box3Helper,
+  BufferGeometry,
   Color,
   DirectionalLight,
   DoubleSide,
@@ -48,6 +49,35 @@ const FIT_DIRECTION = new Vector3(0.55, 0.45, 1).normalize();
 export const LIGHT_IN_CAMERA = new Vector3(-0.45, 0.8, 0.7).normalize();
 /** Ambient and directional shares of the surface colour (Lambert / π). */
 export const LIGHT_SHARES = { ambient: 0.32, directional: 0.8 } as const;
+
+/**
+ * Draws `parts` (a level's geometry, maybe in parts) with `object`: the
+ * first part itself, the others as children sharing its material, made as
+ * needed and kept (hidden) for the next level; created in order, so three
+ * draws them in order (same material, same depth: by object id).
+ */
+function showParts(object: Mesh | LineSegments, parts: readonly BufferGeometry[]): void {
+  object.geometry = parts[0];
+  for (let i = 1; i < parts.length; i++) {
+    let child = object.children[i - 1] as Mesh | LineSegments | undefined;
+    if (!child) {
+      child =
+        object instanceof Mesh ? new Mesh(parts[i], object.material) : new LineSegments(parts[i], object.material);
+      child.frustumCulled = false;
+      object.add(child);
+    }
+    child.geometry = parts[i];
+    child.visible = true;
+  }
+  for (const child of object.children.slice(parts.length - 1) as (Mesh | LineSegments)[]) {
+    child.visible = false;
+    // Lets a dropped level's arrays go.
+    child.geometry = NO_GEOMETRY;
+  }
+}
+
+/** What hidden parts hold (never drawn). */
+const NO_GEOMETRY = new BufferGeometry();
 
 export class SceneView {
   readonly canvas: HTMLCanvasElement;
@@ -154,7 +184,8 @@ export class SceneView {
       this.frame = requestAnimationFrame(loop);
       if (!this.onScreen) return;
       this.controls.update();
-      if (this.dirty) this.render();
+      // A large new level goes to the GPU a few megabytes a frame before its first draw.
+      if (this.dirty && !this.renderer.upload(this.shownGeometries())) this.render();
     };
     this.frame = requestAnimationFrame(loop);
   }
@@ -162,8 +193,15 @@ export class SceneView {
   /** Shows a level (null: nothing). The caller keeps ownership of `graphics`. */
   setLevel(graphics: LevelGraphics | null): void {
     if (graphics) {
-      this.surface.geometry = graphics.surface;
-      this.edgeLines.geometry = graphics.edges;
+      showParts(this.surface, graphics.surfaceParts);
+      for (const material of [this.smoothMaterial, this.flatMaterial]) {
+        // The side is part of the shader (three's DOUBLE_SIDED / FLIP_SIDED): recompiled when it changes.
+        if (material.side !== graphics.side) {
+          material.side = graphics.side;
+          material.needsUpdate = true;
+        }
+      }
+      showParts(this.edgeLines, graphics.edgeParts);
       if (graphics.curves) this.curveLines.geometry = graphics.curves;
     }
     this.surface.userData.hasLevel = graphics !== null;
@@ -201,6 +239,7 @@ export class SceneView {
     this.mode = mode;
     // Edges go over smooth shading: flat shading of a non-planar quad would show its fan diagonal.
     this.surface.material = mode === 'flat' ? this.flatMaterial : this.smoothMaterial;
+    for (const part of this.surface.children) (part as Mesh).material = this.surface.material;
     this.applyVisibility();
   }
 
@@ -292,7 +331,8 @@ export class SceneView {
 
   /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */
   edgeSegments(): number {
-    return (this.edgeLines.geometry.index?.count ?? 0) / 2;
+    const parts = [this.edgeLines, ...this.edgeLines.children.filter((c) => c.visible)] as LineSegments[];
+    return parts.reduce((sum, part) => sum + (part.geometry.index?.count ?? 0), 0) / 2;
   }
 
   /** Geometries and textures alive on the GPU for the whole page (three's renderer.info), for leak checks. */
@@ -322,6 +362,13 @@ export class SceneView {
     this.dirty = false;
     this.renderer.draw(this.scene, this.camera, this.context, this.canvas.width, this.canvas.height, this.background);
     this.onDraw?.();
+  }
+
+  /** The geometries the next draw needs on the GPU. */
+  private shownGeometries(): BufferGeometry[] {
+    const objects = [this.surface, this.edgeLines, this.controlLines, this.curveLines].filter((o) => o.visible);
+    const parts = objects.flatMap((o) => [o, ...o.children.filter((c) => c.visible)]) as (Mesh | LineSegments)[];
+    return parts.map((o) => o.geometry);
   }
 
   /** Size of the view in CSS pixels. */

@@ -11,7 +11,29 @@
  * backgrounds and above nothing else, which a teacher's page cannot be
  * asked to allow for.)
  */
-import { type Camera, Color, type Scene, WebGLRenderer } from 'three';
+import {
+  type BufferAttribute,
+  BufferGeometry,
+  type Camera,
+  Color,
+  type InterleavedBufferAttribute,
+  Mesh,
+  MeshBasicMaterial,
+  OrthographicCamera,
+  Scene,
+  WebGLRenderer,
+} from 'three';
+
+type Attribute = BufferAttribute | InterleavedBufferAttribute;
+
+/**
+ * Bytes a view sends to the GPU per animation frame before the first draw
+ * of a large level. Chromium copies a buffer to the GPU process within the
+ * call that hands it over, at about 2–4 ms per megabyte with SwiftShader on
+ * a loaded machine: a 1 M-face level (30–45 MB) in one frame would hold the
+ * page for 40–130 ms.
+ */
+export const UPLOAD_BYTES_PER_FRAME = 8 * 1024 * 1024;
 
 export class SharedRenderer {
   readonly renderer: WebGLRenderer;
@@ -19,13 +41,27 @@ export class SharedRenderer {
   private height = 1;
   private readonly clearColor = new Color();
   private readonly views = new Set<() => void>();
+  /** Attributes {@link upload} has sent to the GPU (or let the next draw send), until their geometry is disposed. */
+  private onGpu = new WeakSet<Attribute>();
+  /** Geometries whose disposal {@link upload} listens to. */
+  private readonly watched = new WeakSet<BufferGeometry>();
+  /** Draws nothing: its one object only makes three.js upload a buffer. */
+  private readonly uploadScene = new Scene();
+  private readonly uploadCamera = new OrthographicCamera();
+  private readonly uploadMesh = new Mesh(undefined, new MeshBasicMaterial());
 
   constructor() {
     this.renderer = new WebGLRenderer({ antialias: true, alpha: true });
     // three.js rebuilds its GPU state when a lost context comes back; the views then draw again.
     this.renderer.domElement.addEventListener('webglcontextrestored', () => {
+      this.onGpu = new WeakSet();
       for (const redraw of this.views) redraw();
     });
+    // No bounding sphere (a pass over every vertex): the mesh draws nothing anyway.
+    this.uploadMesh.frustumCulled = false;
+    this.uploadScene.add(this.uploadMesh);
+    // Its shader, given to the GPU process now: linked long before a first use would wait for it.
+    this.renderer.compile(this.uploadScene, this.uploadCamera);
     // Views work in device pixels themselves.
     this.renderer.setPixelRatio(1);
     this.renderer.setSize(this.width, this.height, false);
@@ -67,6 +103,71 @@ export class SharedRenderer {
     target.drawImage(r.domElement, 0, this.height - height, width, height, 0, 0, width, height);
   }
 
+  /**
+   * Spreads the upload of `geometries` (what a view is about to draw) over
+   * animation frames: when what is not yet on the GPU exceeds
+   * {@link UPLOAD_BYTES_PER_FRAME}, sends whole buffers up to about that
+   * many bytes and returns true (the view draws in a later frame); returns
+   * false when the draw may go ahead, sending the rest itself.
+   */
+  upload(geometries: readonly BufferGeometry[]): boolean {
+    const pending: { attribute: Attribute; index: boolean }[] = [];
+    let total = 0;
+    for (const geometry of geometries) {
+      const attributes = [...Object.values(geometry.attributes)].map((attribute) => ({ attribute, index: false }));
+      if (geometry.index) attributes.push({ attribute: geometry.index, index: true });
+      for (const entry of attributes) {
+        if (this.onGpu.has(entry.attribute) || pending.some((p) => p.attribute === entry.attribute)) continue;
+        pending.push(entry);
+        total += bytesOf(entry.attribute);
+      }
+      this.watch(geometry);
+    }
+    for (const { attribute } of pending) this.onGpu.add(attribute);
+    if (total <= UPLOAD_BYTES_PER_FRAME) return false;
+    let sent = 0;
+    for (const [i, entry] of pending.entries()) {
+      if (sent > 0 && sent + bytesOf(entry.attribute) > UPLOAD_BYTES_PER_FRAME) {
+        for (const rest of pending.slice(i)) this.onGpu.delete(rest.attribute);
+        break;
+      }
+      this.send(entry.attribute, entry.index);
+      sent += bytesOf(entry.attribute);
+    }
+    return true;
+  }
+
+  /** Makes three.js upload one buffer: an object drawing nothing (draw range 0) whose geometry holds it. */
+  private send(attribute: Attribute, index: boolean): void {
+    const geometry = new BufferGeometry();
+    if (index) geometry.setIndex(attribute as BufferAttribute);
+    else geometry.setAttribute('position', attribute);
+    geometry.setDrawRange(0, 0);
+    this.uploadMesh.geometry = geometry;
+    const r = this.renderer;
+    r.setViewport(0, 0, 1, 1);
+    r.setScissor(0, 0, 1, 1);
+    r.render(this.uploadScene, this.uploadCamera);
+    // Frees three's record of the helper geometry, not the buffer: it belongs to the level's geometry.
+    geometry.setIndex(null);
+    geometry.deleteAttribute('position');
+    geometry.dispose();
+    this.uploadMesh.geometry = new BufferGeometry();
+  }
+
+  /** Forgets a geometry's buffers when three frees them (its dispose). */
+  private watch(geometry: BufferGeometry): void {
+    if (this.watched.has(geometry)) return;
+    this.watched.add(geometry);
+    const forget = () => {
+      if (geometry.index) this.onGpu.delete(geometry.index);
+      for (const attribute of Object.values(geometry.attributes)) this.onGpu.delete(attribute);
+      this.watched.delete(geometry);
+      geometry.removeEventListener('dispose', forget);
+    };
+    geometry.addEventListener('dispose', forget);
+  }
+
   /** Grows the drawing buffer to hold `width` × `height`. */
   private reserve(width: number, height: number): void {
     if (width <= this.width && height <= this.height) return;
@@ -88,6 +189,10 @@ export class SharedRenderer {
     const { geometries, textures } = this.renderer.info.memory;
     return { geometries, textures };
   }
+}
+
+function bytesOf(attribute: Attribute): number {
+  return 'isInterleavedBufferAttribute' in attribute ? attribute.data.array.byteLength : attribute.array.byteLength;
 }
 
 let shared: SharedRenderer | null = null;

@@ -111,6 +111,13 @@ export class SubdivViewer {
   private stepping = false;
   private disposed = false;
   private drawn: DrawnLevel | null = null;
+  /**
+   * The size of the next step from the last level, asked for once that
+   * level is drawn (a prediction copies the level's mesh into the core:
+   * tens of milliseconds on a million faces, otherwise spent after the
+   * click); `key` names the generation and the level it was asked from.
+   */
+  private ahead: { key: string; prediction: Promise<SizePrediction> } | null = null;
 
   constructor(container: HTMLElement, options: SubdivViewerOptions = {}) {
     this.core = (options.client ?? pageCore()).session();
@@ -120,7 +127,9 @@ export class SubdivViewer {
     this.view = new SceneView(container);
     if (options.renderMode) this.view.setRenderMode(options.renderMode);
     this.view.onDraw = () => {
-      if (this.levels.length > 0) this.drawn = { level: this.current, at: performance.now() };
+      if (this.levels.length === 0) return;
+      this.drawn = { level: this.current, at: performance.now() };
+      if (this.current === this.levels.length - 1 && !this.busyState && !this.stepping) this.predictAhead();
     };
     this.view.onViewChange = () => {
       if (this.viewListeners.size === 0) return;
@@ -205,7 +214,7 @@ export class SubdivViewer {
     const options = this.stepOptions(from, 1);
     this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
     try {
-      const prediction = await this.withHandle(from, (h) => this.core.predictSize(h, options));
+      const prediction = await this.predictionFrom(from, options);
       const estimatedBytes = stepBytes(prediction);
       if (estimatedBytes > this.memoryBudget) {
         this.setBusy(null);
@@ -413,6 +422,34 @@ export class SubdivViewer {
     else this.emit();
   }
 
+  /** Asks the core for the size of the next step from the last level, unless already asked. */
+  private predictAhead(): void {
+    const from = this.levels.length - 1;
+    const key = `${this.generation}/${from}`;
+    if (this.ahead?.key === key) return;
+    const { handle } = this.levels[from].data;
+    // A level the worker lost (it restarted) is restored only when used, not ahead.
+    if (handle.epoch !== this.core.client.epoch) return;
+    const prediction = this.core.predictSize(handle, this.stepOptions(from, 1));
+    // Unused or failed, it is asked again by the step.
+    prediction.catch(() => {});
+    this.ahead = { key, prediction };
+  }
+
+  /** The size of the step from level `from` with `options`: the one asked ahead, or asked now. */
+  private async predictionFrom(from: number, options: SubdivideOptions): Promise<SizePrediction> {
+    const ahead = this.ahead?.key === `${this.generation}/${from}` ? this.ahead.prediction : null;
+    this.ahead = null;
+    if (ahead) {
+      try {
+        return await ahead;
+      } catch {
+        // Cancelled or lost with a restarted worker: ask again.
+      }
+    }
+    return this.withHandle(from, (h) => this.core.predictSize(h, options));
+  }
+
   /** Options of `levels` steps from level `from` under the current scheme and options. */
   private stepOptions(from: number, levels: number): SubdivideOptions {
     return {
@@ -470,7 +507,8 @@ export class SubdivViewer {
   }
 
   private graphicsOf(level: Level): LevelGraphics {
-    if (!level.graphics) level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges);
+    if (!level.graphics)
+      level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges, level.data.orientation);
     return level.graphics;
   }
 
