@@ -124,12 +124,17 @@ struct Face_slots {
   std::uint32_t first_edge, centre, first_face, kept_corner, first_corner;
 };
 
-/// What the per-face splits write into: the child and its tables.
+/// What the per-face splits write into: the child's tables (null where
+/// the child has none: halfedges on the last level, targets there unless
+/// edges are marked, offsets unless it mixes degrees).
 struct Child {
-  Level& c;
-  const Parts& parts;
-  std::uint32_t* target;   ///< halfedge_target (when parts.targets)
-  std::uint32_t* offsets;  ///< face_offsets of a mixed child, else nullptr
+  std::uint32_t *vertices, *halfedges, *corner, *target, *offsets;
+  Child(Level& c, const Parts& parts)
+      : vertices(c.face_vertices.data()),
+        halfedges(parts.halfedges ? c.face_halfedges.data() : nullptr),
+        corner(parts.halfedges ? c.halfedge_corner.data() : nullptr),
+        target(parts.targets ? c.halfedge_target.data() : nullptr),
+        offsets(c.uniform_degree == 0 ? c.face_offsets.data() : nullptr) {}
 };
 
 /// Writes child face `face`, whose corners start at `corner`: its vertices,
@@ -138,26 +143,38 @@ struct Child {
 template <std::uint32_t K>
 inline void put_face(const Child& out, std::uint32_t face, std::uint32_t corner,
                      const std::uint32_t (&v)[K], const std::uint32_t (&h)[K]) {
-  std::uint32_t* vertices = out.c.face_vertices.data() + corner;
+  std::uint32_t* vertices = out.vertices + corner;
   for (std::uint32_t r = 0; r < K; ++r) vertices[r] = v[r];
   if (out.offsets != nullptr) out.offsets[face] = corner;
-  if (!out.parts.halfedges) return;
-  std::uint32_t* fh = out.c.face_halfedges.data() + corner;
-  std::uint32_t* at = out.c.halfedge_corner.data();
+  if (out.halfedges == nullptr) return;
+  std::uint32_t* fh = out.halfedges + corner;
   for (std::uint32_t r = 0; r < K; ++r) {
     fh[r] = h[r];
-    at[h[r]] = corner + r;
+    out.corner[h[r]] = corner + r;
   }
 }
 
+/// What the per-face splits read: the parent's counts and corner tables,
+/// held apart from the Level (the splits' stores could alias its counts).
+struct Parent {
+  std::uint32_t V, E;
+  const std::uint32_t *halfedges, *vertices;
+  explicit Parent(const Level& p)
+      : V(p.vertex_count),
+        E(p.edge_count),
+        halfedges(p.face_halfedges.data()),
+        vertices(p.face_vertices.data()) {}
+};
+
 /// PQQ_1step's split of parent face f (corners [begin, begin + k)): k quads
-/// around the face point.
-inline void split_pqq_face(const Level& p, const Child& out, std::uint32_t f,
-                           std::uint32_t begin, std::uint32_t k,
-                           const Face_slots& s) {
-  const std::uint32_t V = p.vertex_count, E = p.edge_count;
-  const std::uint32_t* fh = p.face_halfedges.data() + begin;
-  const std::uint32_t* fv = p.face_vertices.data() + begin;
+/// around the face point. Inlined into each host's loop (two callers
+/// each: the compiler would call it, 15-25% slower on PTQ's topology).
+[[gnu::always_inline]] inline void split_pqq_face(
+    const Parent p, const Child& out, std::uint32_t f, std::uint32_t begin,
+    std::uint32_t k, const Face_slots& s) {
+  const std::uint32_t V = p.V, E = p.E;
+  const std::uint32_t* fh = p.halfedges + begin;
+  const std::uint32_t* fv = p.vertices + begin;
   const std::uint32_t start = first_corner_offset(fh, k);
   // g(j) for j = 1..k runs v_j -> v_j+1, which ends at corner start + j.
   auto at = [&](std::uint32_t j) {
@@ -175,7 +192,7 @@ inline void split_pqq_face(const Level& p, const Child& out, std::uint32_t f,
     const std::uint32_t e = s.first_edge + j - 1;
     return j == 2 ? 2 * e + 1 : 2 * e;
   };
-  if (out.parts.targets) {
+  if (out.target != nullptr) {
     for (std::uint32_t j = 1; j <= k; ++j) {
       const std::uint32_t h = into_centre(j);
       out.target[h] = s.centre;
@@ -201,12 +218,15 @@ inline void split_pqq_face(const Level& p, const Child& out, std::uint32_t f,
 }
 
 /// PTQ_1step's split of parent triangle f (corners from `begin`): the
-/// middle triangle keeps f, the corner ones follow.
-inline void split_ptq_face(const Level& p, const Child& out, std::uint32_t f,
-                           std::uint32_t begin, const Face_slots& s) {
-  const std::uint32_t V = p.vertex_count, E = p.edge_count;
-  const std::uint32_t* fh = p.face_halfedges.data() + begin;
-  const std::uint32_t* fv = p.face_vertices.data() + begin;
+/// middle triangle keeps f, the corner ones follow. Inlined as above.
+[[gnu::always_inline]] inline void split_ptq_face(const Parent p,
+                                                  const Child& out,
+                                                  std::uint32_t f,
+                                                  std::uint32_t begin,
+                                                  const Face_slots& s) {
+  const std::uint32_t V = p.V, E = p.E;
+  const std::uint32_t* fh = p.halfedges + begin;
+  const std::uint32_t* fv = p.vertices + begin;
   const std::uint32_t start = first_corner_offset(fh, 3);
   const std::uint32_t i1 = start == 2 ? 0 : start + 1,
                       i2 = start == 0 ? 2 : start - 1;
@@ -216,7 +236,7 @@ inline void split_ptq_face(const Level& p, const Child& out, std::uint32_t f,
                       m3 = V + (g3 >> 1);
   const std::uint32_t e = s.first_edge;
   const std::uint32_t h12 = 2 * e, h23 = 2 * (e + 1), h31 = 2 * (e + 2);
-  if (out.parts.targets) {
+  if (out.target != nullptr) {
     std::uint32_t* t = out.target;
     t[h12] = m2;
     t[h12 + 1] = m1;
@@ -246,12 +266,13 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
   c.face_count = S;
   c.uniform_degree = 4;
   c.face_offsets = {};
-  const Child out{c, parts, c.halfedge_target.data(), nullptr};
+  const Child out(c, parts);
+  const Parent in(p);
   for (std::uint32_t f = 0; f < F; ++f) {
     const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
     const std::uint32_t first_face = F + begin - f;
     split_pqq_face(
-        p, out, f, begin, k,
+        in, out, f, begin, k,
         {2 * E + begin, V + E + f, first_face, 4 * f, 4 * first_face});
   }
 }
@@ -264,9 +285,10 @@ void refine_ptq_topology(const Level& p, Level& c, bool last) {
   c.face_count = 4 * F;
   c.uniform_degree = 3;
   c.face_offsets = {};
-  const Child out{c, parts, c.halfedge_target.data(), nullptr};
+  const Child out(c, parts);
+  const Parent in(p);
   for (std::uint32_t f = 0; f < F; ++f)
-    split_ptq_face(p, out, f, 3 * f,
+    split_ptq_face(in, out, f, 3 * f,
                    {2 * E + 3 * f, kNone, F + 3 * f, 3 * f, 3 * (F + 3 * f)});
 }
 
@@ -293,8 +315,8 @@ void refine_pqt_topology(const Level& p, Level& c, bool last) {
   } else {
     c.face_offsets = {};
   }
-  const Child out{c, parts, c.halfedge_target.data(),
-                  c.uniform_degree == 0 ? c.face_offsets.data() : nullptr};
+  const Child out(c, parts);
+  const Parent in(p);
   // q: the polygons before f. The kept faces come first (f's 3 or 4
   // corners after 3f + q), then each face's new ones: 3 triangles after a
   // triangle, k - 1 quads after a k-gon, so 4 begin - 3f - q corners
@@ -305,9 +327,9 @@ void refine_pqt_topology(const Level& p, Level& c, bool last) {
     const Face_slots s{2 * E + begin, V + E + q, F + begin - q, 3 * f + q,
                        3 * F + Q + 4 * begin - 3 * f - q};
     if (k == 3) {
-      split_ptq_face(p, out, f, begin, s);
+      split_ptq_face(in, out, f, begin, s);
     } else {
-      split_pqq_face(p, out, f, begin, k, s);
+      split_pqq_face(in, out, f, begin, k, s);
       ++q;
     }
   }
