@@ -1,6 +1,7 @@
 #!/usr/bin/env node
 // `npm run bench` (after setup.mjs). Subdivision: one level of each scheme
-// on bunny00 (75k faces), then Catmull-Clark and Loop to 1-5 M faces (see
+// on bunny00 (75k faces; quad-triangle two levels too), then Catmull-Clark
+// and Loop to 1-5 M faces (see
 // schemeRows), each natively with CGAL's own hosts
 // (build/native/subdiv_bench_native, from wasm/bench/bench_native.cpp), for
 // Catmull-Clark and Loop with OpenSubdiv's Far layer (subdiv_bench_osd, from
@@ -21,7 +22,7 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 import { benchApp, printApp } from './bench-app.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
-const SCHEMES = ['catmull-clark', 'loop', 'doo-sabin', 'sqrt3'];
+const SCHEMES = ['catmull-clark', 'loop', 'doo-sabin', 'sqrt3', 'quad-triangle'];
 const OSD_SCHEMES = ['catmull-clark', 'loop'];
 
 const argv = process.argv.slice(2);
@@ -70,6 +71,7 @@ function schemeRows() {
   const big = Math.min(runs, 3);
   const elephant = cgalDataMesh('refined_elephant.off');
   const million = loopInput(defaultMesh, 2, 'bunny00-loop2.off');
+  rows.push({ mesh: defaultMesh, scheme: 'quad-triangle', levels: 2, runs: big });
   for (const [mesh, levels] of [
     [defaultMesh, 2],
     [elephant, 2],

@@ -31,11 +31,13 @@
 #include "refine/primal_hosts.h"
 #include "refine/primal_masks.h"
 #include "refine/primal_points.h"
+#include "refine_test_support.h"
 
 namespace subdivlab {
 namespace {
 
 namespace SM3 = CGAL::Subdivision_method_3;
+using namespace refine_test;
 
 Mesh load(const std::string& name, bool triangulate) {
   std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
@@ -62,12 +64,6 @@ void cgal_step(const std::string& scheme, const Custom_rules& rules, Mesh& m) {
   if (scheme == "custom") custom_subdivision_step(m, rules, 0);
 }
 
-double size_of(const std::vector<double>& p) {
-  double s = 0;
-  for (double x : p) s = std::max(s, std::abs(x));
-  return s;
-}
-
 /// Fast levels 1..3 of `mesh` equal CGAL's, index for index.
 void expect_cgal_levels(const std::string& scheme, const Custom_rules& rules,
                         const std::string& fixture, bool triangulate) {
@@ -92,14 +88,9 @@ void expect_cgal_levels(const std::string& scheme, const Custom_rules& rules,
     level = child;
     const Mesh_buffers got = refine::level_to_buffers(std::move(child));
     const std::string at = what + ", level " + std::to_string(k);
-    ASSERT_EQ(got.vertex_count(), expected.vertex_count()) << at;
-    ASSERT_EQ(got.face_sizes, expected.face_sizes) << at;
-    ASSERT_EQ(got.face_indices, expected.face_indices) << at;
     ASSERT_EQ(level.edge_count, reference.number_of_edges()) << at;
-    const double tol = 1e-12 * size_of(expected.positions);
-    for (std::size_t i = 0; i < expected.positions.size(); ++i)
-      ASSERT_NEAR(got.positions[i], expected.positions[i], tol)
-          << at << ", vertex " << i / 3;
+    expect_same_buffers(got, expected, at);
+    if (testing::Test::HasFatalFailure()) return;
     // The halfedges too: same targets, edge by edge.
     for (Mesh::Halfedge_index h : reference.halfedges())
       ASSERT_EQ(level.halfedge_target[h.idx()], reference.target(h).idx())
@@ -107,17 +98,11 @@ void expect_cgal_levels(const std::string& scheme, const Custom_rules& rules,
   }
 }
 
-const char* const kAnyFaces[] = {
-    "cube.off",        "tetrahedron.off",         "octahedron.off",
-    "icosahedron.off", "rhombicuboctahedron.off", "torus-quad.off",
-    "torus-tri.off",   "two-tetrahedra.off",      "disk-tri.off",
-    "grid-open.off",   "mixed-open.off"};
-
 TEST(FastPrimalHosts, LevelFromBuffersEqualsTheSurfaceMeshBuildMeshBuilds) {
   // Surface_mesh::add_face's numbering, worked out without the mesh; the
   // last case has an isolated vertex (dropped) and mixed degrees.
   std::vector<Mesh_buffers> cases;
-  for (const char* f : kAnyFaces) cases.push_back(to_buffers(load(f, false)));
+  for (const char* f : kFixtures) cases.push_back(to_buffers(load(f, false)));
   Mesh_buffers odd = cases.back();
   odd.positions.insert(odd.positions.begin(), {9.0, 9.0, 9.0});
   for (std::uint32_t& v : odd.face_indices) ++v;
@@ -142,7 +127,7 @@ TEST(FastPrimalHosts, LevelFromBuffersEqualsTheSurfaceMeshBuildMeshBuilds) {
 }
 
 TEST(FastPrimalHosts, CatmullClarkAndLinearEqualCgal) {
-  for (const char* f : kAnyFaces) {
+  for (const char* f : kFixtures) {
     expect_cgal_levels("catmull-clark", {}, f, false);
     expect_cgal_levels("linear", {}, f, false);
     expect_cgal_levels("custom", custom_rules_preset("catmull-clark", 64), f,
@@ -161,11 +146,11 @@ TEST(FastPrimalHosts, FacePointsWeighedApartFromNeighboursEqualCgal) {
   ASSERT_TRUE(refine::primal_mask("custom", apart).mask.separate_face_sums());
   ASSERT_FALSE(
       refine::primal_mask("catmull-clark", {}).mask.separate_face_sums());
-  for (const char* f : kAnyFaces) expect_cgal_levels("custom", apart, f, false);
+  for (const char* f : kFixtures) expect_cgal_levels("custom", apart, f, false);
 }
 
 TEST(FastPrimalHosts, LoopAndLinearTriEqualCgal) {
-  for (const char* f : kAnyFaces) {
+  for (const char* f : kFixtures) {
     expect_cgal_levels("loop", {}, f, true);
     expect_cgal_levels("linear-tri", {}, f, true);
     expect_cgal_levels("custom", custom_rules_preset("improved-loop", 64), f,
@@ -200,26 +185,11 @@ void expect_same_run(const Mesh_buffers& in, Subdivide_options o,
   const Result<Mesh_buffers> cgal = subdivide_mesh(in, o);
   ASSERT_TRUE(cgal.ok()) << what << ": " << cgal.status.message;
   ASSERT_TRUE(fast.ok()) << what << ": " << fast.status.message;
-  ASSERT_EQ(fast.value.face_sizes, cgal.value.face_sizes) << what;
-  ASSERT_EQ(fast.value.face_indices, cgal.value.face_indices) << what;
-  ASSERT_EQ(fast.value.positions.size(), cgal.value.positions.size()) << what;
-  const double tol = 1e-12 * size_of(cgal.value.positions);
-  for (std::size_t i = 0; i < cgal.value.positions.size(); ++i)
-    ASSERT_NEAR(fast.value.positions[i], cgal.value.positions[i], tol)
-        << what << ", vertex " << i / 3;
-  auto pairs = [](const std::vector<std::uint32_t>& e) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> p;
-    for (std::size_t i = 0; i + 1 < e.size(); i += 2)
-      p.emplace_back(std::min(e[i], e[i + 1]), std::max(e[i], e[i + 1]));
-    std::sort(p.begin(), p.end());
-    return p;
-  };
-  EXPECT_EQ(pairs(fast.value.control_edges), pairs(cgal.value.control_edges))
-      << what;
+  expect_same_buffers(fast.value, cgal.value, what);
 }
 
 TEST(FastPrimalHosts, SubdivideMeshEqualsItsCgalHostsOnEveryFixture) {
-  for (const char* f : kAnyFaces) {
+  for (const char* f : kFixtures) {
     const Mesh_buffers in = fixture_buffers(f);
     for (const char* scheme :
          {"catmull-clark", "loop", "linear", "linear-tri", "custom"}) {
@@ -243,19 +213,12 @@ TEST(FastPrimalHosts, SubdivideMeshEqualsItsCgalHostsOnCgalsMeshes) {
   // Larger meshes from CGAL's data set (set-up extracts them): open with
   // holes, closed with high valences.
   for (const char* f : {"holes.off", "fandisk.off", "mannequin-devil.off"}) {
-    std::ifstream file(
-        std::string(FIXTURES_DIR) + "/../../public/meshes/cgal/" + f,
-        std::ios::binary);
-    ASSERT_TRUE(file.good()) << f << " missing: run node scripts/setup.mjs";
-    std::stringstream text;
-    text << file.rdbuf();
-    const Result<Mesh_buffers> in = read_mesh(text.str(), Mesh_format::off);
-    ASSERT_TRUE(in.ok()) << f;
+    const Mesh_buffers in = cgal_mesh(f);
     for (const char* scheme : {"catmull-clark", "loop"}) {
       Subdivide_options o;
       o.scheme = scheme;
       o.levels = 2;
-      expect_same_run(in.value, o, std::string(scheme) + " x2 on " + f);
+      expect_same_run(in, o, std::string(scheme) + " x2 on " + f);
     }
   }
 }
@@ -283,22 +246,7 @@ TEST(FastPrimalHosts,
   o.custom = custom_rules_preset("catmull-clark", 4);
   o.levels = 3;
   EXPECT_TRUE(subdivide_mesh(fixture_buffers("cube.off"), o).ok());
-  Mesh_buffers prism;
-  for (int i = 0; i < 5; ++i) {
-    const double a = 2 * CGAL_PI * i / 5;
-    for (double z : {0.0, 1.0}) {
-      prism.positions.push_back(std::cos(a));
-      prism.positions.push_back(std::sin(a));
-      prism.positions.push_back(z);
-    }
-  }
-  prism.face_sizes = {5, 5, 4, 4, 4, 4, 4};
-  prism.face_indices = {8, 6, 4, 2, 0, 1, 3, 5, 7, 9};
-  for (std::uint32_t i = 0; i < 5; ++i) {
-    const std::uint32_t j = (i + 1) % 5;
-    for (std::uint32_t v : {2 * i, 2 * j, 2 * j + 1, 2 * i + 1})
-      prism.face_indices.push_back(v);
-  }
+  const Mesh_buffers prism = pentagonal_prism();
   const Result<Mesh_buffers> r = subdivide_mesh(prism, o);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status.code, Status_code::invalid_argument);
@@ -314,7 +262,7 @@ TEST(FastPrimalHosts,
 // ones against dqq_border_3.h, through subdivide_mesh's two routes.
 
 TEST(FastDualHost, VertexHalfedgesAreTheOnesAddFaceLeaves) {
-  for (const char* f : kAnyFaces) {
+  for (const char* f : kFixtures) {
     const Mesh m = load(f, false);
     refine::Level l = refine::level_from_mesh(m);
     refine::add_face_vertex_halfedges(l);
@@ -368,19 +316,14 @@ void expect_cgal_dqq_levels(const Custom_rules* rules, const Mesh& mesh,
           << at << ", vertex " << v.idx();
     level = child;
     const Mesh_buffers got = refine::level_to_buffers(std::move(child));
-    ASSERT_EQ(got.face_sizes, expected.face_sizes) << at;
-    ASSERT_EQ(got.face_indices, expected.face_indices) << at;
-    ASSERT_EQ(got.positions.size(), expected.positions.size()) << at;
-    const double tol = 1e-12 * size_of(expected.positions);
-    for (std::size_t i = 0; i < expected.positions.size(); ++i)
-      ASSERT_NEAR(got.positions[i], expected.positions[i], tol)
-          << at << ", vertex " << i / 3;
+    expect_same_buffers(got, expected, at);
+    if (testing::Test::HasFatalFailure()) return;
   }
 }
 
 TEST(FastDualHost, TablesEqualCgalsLevelByLevel) {
   const Custom_rules preset = custom_rules_preset("doo-sabin", 64);
-  for (const char* f : kAnyFaces) {
+  for (const char* f : kFixtures) {
     expect_cgal_dqq_levels(nullptr, load(f, false),
                            std::string("doo-sabin on ") + f);
     expect_cgal_dqq_levels(&preset, load(f, false),
@@ -401,7 +344,7 @@ std::vector<Custom_rules> dqq_rules() {
 }
 
 TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnEveryFixture) {
-  for (const char* f : kAnyFaces) {
+  for (const char* f : kFixtures) {
     const Mesh_buffers in = fixture_buffers(f);
     for (int levels = 1; levels <= 3; ++levels) {
       Subdivide_options o;
@@ -441,21 +384,13 @@ TEST(FastDualHost, AClosedAndAnOpenComponentTogetherTakeTheBorderHost) {
 }
 
 TEST(FastDualHost, SubdivideMeshEqualsItsCgalHostsOnCgalsMeshes) {
-  for (const char* f : {"holes.off", "fandisk.off", "mannequin-devil.off",
-                        "cube_quad.off", "torus_quad.off"}) {
-    std::ifstream file(
-        std::string(FIXTURES_DIR) + "/../../public/meshes/cgal/" + f,
-        std::ios::binary);
-    ASSERT_TRUE(file.good()) << f << " missing: run node scripts/setup.mjs";
-    std::stringstream text;
-    text << file.rdbuf();
-    const Result<Mesh_buffers> in = read_mesh(text.str(), Mesh_format::off);
-    ASSERT_TRUE(in.ok()) << f;
+  for (const char* f : kCgalMeshes) {
+    const Mesh_buffers in = cgal_mesh(f);
     for (int levels = 1; levels <= 2; ++levels) {
       Subdivide_options o;
       o.scheme = "doo-sabin";
       o.levels = levels;
-      expect_same_run(in.value, o,
+      expect_same_run(in, o,
                       "doo-sabin x" + std::to_string(levels) + " on " + f);
     }
   }

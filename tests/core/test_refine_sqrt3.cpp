@@ -26,30 +26,14 @@
 #include "refine/primal_masks.h"
 #include "refine/primal_points.h"
 #include "refine/sqrt3_host.h"
+#include "refine_test_support.h"
 
 namespace subdivlab {
 namespace {
 
 namespace SMI = CGAL::Subdivision_method_3::internal;
 
-Mesh_buffers read_off(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << path << " missing: run node scripts/setup.mjs";
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const Result<Mesh_buffers> r = read_mesh(ss.str(), Mesh_format::off);
-  EXPECT_TRUE(r.ok()) << path << ": " << r.status.message;
-  return r.value;
-}
-
-Mesh_buffers fixture(const std::string& name) {
-  return read_off(std::string(FIXTURES_DIR) + "/" + name);
-}
-
-Mesh_buffers cgal_mesh(const std::string& name) {
-  return read_off(std::string(FIXTURES_DIR) + "/../../public/meshes/cgal/" +
-                  name);
-}
+using namespace refine_test;
 
 Mesh triangulated(const Mesh_buffers& in) {
   Mesh m;
@@ -58,22 +42,6 @@ Mesh triangulated(const Mesh_buffers& in) {
   m.collect_garbage();
   return m;
 }
-
-double size_of(const std::vector<double>& p) {
-  double s = 0;
-  for (double x : p) s = std::max(s, std::abs(x));
-  return s;
-}
-
-const char* const kFixtures[] = {
-    "cube.off",        "tetrahedron.off",         "octahedron.off",
-    "icosahedron.off", "rhombicuboctahedron.off", "torus-quad.off",
-    "torus-tri.off",   "two-tetrahedra.off",      "disk-tri.off",
-    "grid-open.off",   "mixed-open.off"};
-
-const char* const kCgalMeshes[] = {"holes.off", "fandisk.off",
-                                   "mannequin-devil.off", "cube_quad.off",
-                                   "torus_quad.off"};
 
 /// Rule sets on the sqrt3 host: the preset, and one with other interior
 /// weights and asymmetric border rules (all four border-edge weights).
@@ -123,37 +91,8 @@ void expect_cgal_levels(const Custom_rules* rules, Mesh reference, int start,
     refine::refine_sqrt3_points(level, mask.mask, border, scratch, points,
                                 child);
     level = child;
-    ASSERT_EQ(level.vertex_count, reference.number_of_vertices()) << at;
-    ASSERT_EQ(level.edge_count, reference.number_of_edges()) << at;
-    ASSERT_EQ(level.face_count, reference.number_of_faces()) << at;
-    std::uint32_t border_edges = 0;
-    for (Mesh::Edge_index e : reference.edges())
-      border_edges += reference.is_border(e) ? 1 : 0;
-    ASSERT_EQ(level.border_edge_count, border_edges) << at;
-    for (Mesh::Face_index f : reference.faces()) {
-      std::uint32_t i = 3 * f.idx();
-      for (Mesh::Halfedge_index h :
-           CGAL::halfedges_around_face(reference.halfedge(f), reference)) {
-        ASSERT_EQ(level.face_halfedges[i], h.idx()) << at << ", face " << f;
-        ASSERT_EQ(level.face_vertices[i], reference.target(h).idx())
-            << at << ", face " << f;
-        ++i;
-      }
-    }
-    for (Mesh::Halfedge_index h : reference.halfedges()) {
-      ASSERT_EQ(level.halfedge_target[h.idx()], reference.target(h).idx())
-          << at << ", halfedge " << h.idx();
-      if (reference.is_border(h))
-        ASSERT_EQ(level.halfedge_corner[h.idx()], refine::kNone) << at;
-      else
-        ASSERT_EQ(level.face_halfedges[level.halfedge_corner[h.idx()]], h.idx())
-            << at;
-    }
-    const Mesh_buffers expected = to_buffers(reference);
-    const double tol = 1e-12 * size_of(expected.positions);
-    for (std::size_t i = 0; i < expected.positions.size(); ++i)
-      ASSERT_NEAR(level.positions[i], expected.positions[i], tol)
-          << at << ", vertex " << i / 3;
+    expect_same_tables(level, reference, at);
+    if (testing::Test::HasFatalFailure()) return;
   }
 }
 
@@ -185,13 +124,7 @@ void expect_same_run(const Mesh_buffers& in, Subdivide_options o,
     ASSERT_TRUE(cgal.ok()) << what << ": " << cgal.status.message;
   }
   if (!cgal.ok()) return;
-  ASSERT_EQ(fast.value.face_sizes, cgal.value.face_sizes) << what;
-  ASSERT_EQ(fast.value.face_indices, cgal.value.face_indices) << what;
-  ASSERT_EQ(fast.value.positions.size(), cgal.value.positions.size()) << what;
-  const double tol = 1e-12 * size_of(cgal.value.positions);
-  for (std::size_t i = 0; i < cgal.value.positions.size(); ++i)
-    ASSERT_NEAR(fast.value.positions[i], cgal.value.positions[i], tol)
-        << what << ", vertex " << i / 3;
+  expect_same_buffers(fast.value, cgal.value, what);
 }
 
 void expect_same_runs(const Mesh_buffers& in, const std::string& name,

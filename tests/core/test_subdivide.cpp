@@ -893,8 +893,9 @@ TEST(SubdivideMemory, SizesPast32BitsStayExactOnEveryTarget) {
       << r.status.message;
 }
 
-/// Quads of a torus, nu x nv.
-Mesh_buffers torus(int nu, int nv, bool triangles) {
+/// Quads of a torus, nu x nv; as triangles (two per quad), or with
+/// `mixed` every other quad (a checkerboard) as two triangles.
+Mesh_buffers torus(int nu, int nv, bool triangles, bool mixed = false) {
   Poly_mesh m;
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
@@ -909,7 +910,7 @@ Mesh_buffers torus(int nu, int nv, bool triangles) {
     for (int j = 0; j < nv; ++j) {
       const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1),
                  d = at(i, j + 1);
-      if (triangles) {
+      if (triangles || (mixed && (i + j) % 2 == 0)) {
         m.faces.push_back({a, b, c});
         m.faces.push_back({a, c, d});
       } else {
@@ -919,8 +920,9 @@ Mesh_buffers torus(int nu, int nv, bool triangles) {
   return poly_to_buffers(m);
 }
 
-/// An open nx x ny grid of quads (or triangles) in z = 0, slightly bent.
-Mesh_buffers grid(int nx, int ny, bool triangles) {
+/// An open nx x ny grid of quads (or triangles, or a checkerboard of both
+/// when `mixed`) in z = 0, slightly bent.
+Mesh_buffers grid(int nx, int ny, bool triangles, bool mixed = false) {
   Poly_mesh m;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i)
@@ -933,7 +935,7 @@ Mesh_buffers grid(int nx, int ny, bool triangles) {
     for (int i = 0; i < nx; ++i) {
       const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1),
                  d = at(i, j + 1);
-      if (triangles) {
+      if (triangles || (mixed && (i + j) % 2 == 0)) {
         m.faces.push_back({a, b, c});
         m.faces.push_back({a, c, d});
       } else {
@@ -982,6 +984,24 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
       {"doo-sabin", "quad grid 30x20 x3", grid(30, 20, false), 0, 3});
   probes.push_back({"sqrt3", "tri torus 40x20 x4", torus(40, 20, true), 0, 4});
   probes.push_back({"sqrt3", "tri grid 30x20 x4", grid(30, 20, true), 0, 4});
+  // Quad/triangle: triangles, quads, both (a level with face offsets and a
+  // parent with polygon counts), open and closed, one and several levels.
+  probes.push_back(
+      {"quad-triangle", "tri torus 160x80", torus(160, 80, true), 0});
+  probes.push_back(
+      {"quad-triangle", "quad torus 160x80", torus(160, 80, false), 0});
+  probes.push_back(
+      {"quad-triangle", "mixed torus 160x80", torus(160, 80, false, true), 0});
+  probes.push_back(
+      {"quad-triangle", "mixed grid 120x100", grid(120, 100, false, true), 0});
+  probes.push_back(
+      {"quad-triangle", "tri grid 120x100", grid(120, 100, true), 0});
+  probes.push_back({"quad-triangle", "mixed torus 40x20 x3",
+                    torus(40, 20, false, true), 0, 3});
+  probes.push_back({"quad-triangle", "mixed grid 30x20 x3",
+                    grid(30, 20, false, true), 0, 3});
+  probes.push_back(
+      {"quad-triangle", "tri torus 40x20 x3", torus(40, 20, true), 0, 3});
   for (const Probe& p : probes) {
     Subdivide_options o = options_for(p.scheme, p.levels, p.start_level);
     const Result<Size_prediction> predicted = predict_size(p.in, o);
@@ -1024,6 +1044,7 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfAViewedStep) {
       {"loop", "tri grid 120x100", grid(120, 100, true)},
       {"doo-sabin", "quad grid 120x100", grid(120, 100, false)},
       {"sqrt3", "tri torus 160x80", torus(160, 80, true)},
+      {"quad-triangle", "mixed torus 160x80", torus(160, 80, false, true)},
   };
   // The bindings copy each array out of the heap: a sink that keeps none.
   struct Discard : Render_sink {

@@ -287,7 +287,7 @@ describe("the core's scheme table", () => {
       ['ptq', true, true, true, 'loop'],
       ['dqq', false, false, true, 'doo-sabin'],
       ['sqrt3', true, false, true, 'sqrt3'],
-      ['pqt', false, true, false, 'quad-triangle'],
+      ['pqt', false, true, true, 'quad-triangle'],
     ]);
   });
 

@@ -40,6 +40,10 @@
 // Catmull-Clark and Loop border masks (old border vertex (1, 6, 1)/8, border
 // edge point at the midpoint). With smooth_boundary = false they keep their
 // refined (linear) positions, so the border polygon does not change.
+//
+// The weights (1, 1/2, 1/4, lambda, the border's 1/4, 1/2, 1/4) are defined
+// once, in refine/primal_masks.h (Quad_triangle_mask): this mask and the
+// fast PQT host (refine/primal_hosts.h, refine/primal_points.h) read them.
 #pragma once
 
 #include <CGAL/Subdivision_method_3/internal/subdivision_hosts_impl_3.h>
@@ -51,27 +55,11 @@
 #include <cstddef>
 #include <vector>
 
+#include "refine/primal_masks.h"
+
 namespace subdivlab {
 
-/// Relaxation factor lambda of the quad/triangle averaging at an interior
-/// vertex with `nq` incident quads and `nt` incident triangles (see the file
-/// comment). Precondition: nq + nt > 0.
-inline double quad_triangle_relaxation(std::size_t nq, std::size_t nt) {
-  const double span = 3.0 * double(nq) + 2.0 * double(nt);  // angle / 30 deg
-  if (span == 12.0) return 1.0;
-  double lambda = 0.0;
-  if (nq > 0) {
-    const double n = span / 3.0;
-    lambda += double(nq) * (4.0 + 3.0 * n) / (n * n);
-  }
-  if (nt > 0) {
-    const double n = span / 2.0;
-    const double t = 3.0 + 2.0 * std::cos(2.0 * CGAL_PI / n);
-    const double c = 5.0 / 8.0 - t * t / 64.0;
-    lambda += double(nt) * (4.0 + 2.0 * n) * c / n;
-  }
-  return lambda / double(nq + nt);
-}
+using refine::quad_triangle_relaxation;
 
 /// Geometry mask of quad/triangle subdivision, for the host PQT_1step.
 /// face_node and edge_node are the linear refinement (read on the control
@@ -95,15 +83,17 @@ class Quad_triangle_mask_3 {
 
   Mesh* pmesh;
   VertexPointMap vpmap;
-  bool smooth_boundary;
+  refine::Quad_triangle_mask weights;
 
   Quad_triangle_mask_3(Mesh* pmesh, bool smooth_boundary = true)
-      : pmesh(pmesh),
-        vpmap(get(CGAL::vertex_point, *pmesh)),
-        smooth_boundary(smooth_boundary) {}
+      : pmesh(pmesh), vpmap(get(CGAL::vertex_point, *pmesh)) {
+    weights.smooth_boundary = smooth_boundary;
+  }
   Quad_triangle_mask_3(Mesh* pmesh, VertexPointMap vpmap,
                        bool smooth_boundary = true)
-      : pmesh(pmesh), vpmap(vpmap), smooth_boundary(smooth_boundary) {}
+      : pmesh(pmesh), vpmap(vpmap) {
+    weights.smooth_boundary = smooth_boundary;
+  }
 
   /// Refinement: centroid of a face that is not a triangle.
   void face_node(face_descriptor f, Point& pt) {
@@ -141,25 +131,27 @@ class Quad_triangle_mask_3 {
         ++nq;
       }
     }
-    const FT alpha = FT(1) / (FT(1) + FT(ne) / 2 + FT(nq) / 4);
-    const Vector a = alpha * (s + ring / FT(2) + opposite_corners / FT(4));
     // Interior: one face per edge, so the triangles are the other faces.
-    const FT lambda = quad_triangle_relaxation(nq, ne - nq);
-    pt = CGAL::ORIGIN + (s + lambda * (a - s));
+    const refine::Quad_triangle_mask::Averaging w = weights.averaging(
+        static_cast<std::uint32_t>(ne), static_cast<std::uint32_t>(nq));
+    const Vector a = w.alpha * (weights.self * s + weights.ring * ring +
+                                weights.opposite * opposite_corners);
+    pt = CGAL::ORIGIN + (s + w.lambda * (a - s));
   }
 
   /// Averaging of a border vertex; `h` is the border halfedge ending at it.
   void border_node(halfedge_descriptor h, Point& pt) {
     const Mesh& m = *pmesh;
     const Point& p = get(vpmap, target(h, m));
-    if (!smooth_boundary) {
+    if (!weights.smooth_boundary) {
       pt = p;
       return;
     }
     const Vector prev = get(vpmap, source(h, m)) - CGAL::ORIGIN;
     const Vector next_v = get(vpmap, target(next(h, m), m)) - CGAL::ORIGIN;
+    const auto& b = weights.border;
     pt = CGAL::ORIGIN +
-         (prev / FT(4) + (p - CGAL::ORIGIN) / FT(2) + next_v / FT(4));
+         (b[0] * prev + b[1] * (p - CGAL::ORIGIN) + b[2] * next_v);
   }
 };
 

@@ -14,7 +14,7 @@ const std::vector<Host_info>& host_table() {
       {"ptq", true, true, true, "loop", "PTQ"},
       {"dqq", false, false, true, "doo-sabin", "DQQ"},
       {"sqrt3", true, false, true, "sqrt3", "\u221a3"},
-      {"pqt", false, true, false, "quad-triangle", "PQT"},
+      {"pqt", false, true, true, "quad-triangle", "PQT"},
   };
   return hosts;
 }

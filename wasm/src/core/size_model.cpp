@@ -325,25 +325,33 @@ double fast_step_peak(const std::string& scheme, bool face_sums,
                       bool first, bool last, double marks, double base) {
   const bool marked = marks > 0;
   // DQQ levels keep their face offsets (mixed degrees) and, but for the
-  // last, their vertices' halfedges.
-  const bool dual = scheme == "doo-sabin";
+  // last, their vertices' halfedges; PQT levels keep theirs when they mix
+  // triangles and other faces.
+  const bool dual = scheme == "doo-sabin", pqt = scheme == "quad-triangle";
+  const auto mixed = [&](const Counts& k) {
+    return dual || (pqt && k.non_triangles > 0 && k.non_triangles < k.faces);
+  };
   const double parent =
       refine::level_bytes(c.vertices, c.edges, c.degree_sum(), marked, false) +
-      (first || dual ? 4 * (c.faces + 1) : 0) + (dual ? 4 * c.vertices : 0);
+      (first || mixed(c) ? 4 * (c.faces + 1) : 0) + (dual ? 4 * c.vertices : 0);
   const double child =
       refine::level_bytes(n.vertices, n.edges, n.degree_sum(), marked, last) +
-      (dual ? 4 * (n.faces + 1) + (last ? 0 : 4 * n.vertices) : 0) +
-      (last ? 16 * marks : 0);
+      (mixed(n) ? 4 * (n.faces + 1) : 0) +
+      (dual && !last ? 4 * n.vertices : 0) + (last ? 16 * marks : 0);
   // sqrt3: the primal points' scratch, and on a border step a code per face
-  // (counted whenever there is a border).
-  const double scratch =
-      dual ? refine::dual_scratch_bytes(c.vertices, c.edges, c.faces,
-                                        c.border_edges > 0)
-           : refine::primal_scratch_bytes(c.vertices, face_sums,
-                                          c.border_edges > 0) +
-                 (scheme == "sqrt3"
-                      ? refine::sqrt3_scratch_bytes(c.faces, c.border_edges > 0)
-                      : 0);
+  // (counted whenever there is a border). PQT: the primal points' sums, and
+  // with faces other than triangles their counts at vertices and edges.
+  const bool border = c.border_edges > 0;
+  double scratch = 0;
+  if (dual)
+    scratch = refine::dual_scratch_bytes(c.vertices, c.edges, c.faces, border);
+  else if (pqt)
+    scratch = refine::pqt_scratch_bytes(c.vertices, c.edges,
+                                        c.non_triangles > 0, border);
+  else
+    scratch =
+        refine::primal_scratch_bytes(c.vertices, face_sums, border) +
+        (scheme == "sqrt3" ? refine::sqrt3_scratch_bytes(c.faces, border) : 0);
   double peak = base + parent + child + scratch;
   // Level 0 comes from the buffers (check_buffers' temporaries: 32 bytes
   // a corner, 8 a vertex, 4 a face; then the level beside the corners'

@@ -1,17 +1,17 @@
 // The subdivision driver: options checked, the run's size predicted
 // (size_model.h), then one step at a time, each preceded by a size check,
 // on one of two routes:
-//   fast hosts (refine/) for the PQQ, PTQ, DQQ and sqrt3 schemes
-//     (scheme_table.h):
+//   fast hosts (refine/) for the PQQ, PTQ, DQQ, sqrt3 and PQT
+//     (quad-triangle) schemes (scheme_table.h):
 //     level 0 taken from the checked buffers, or from CGAL's mesh when
 //     polygons must be triangulated first; the levels' tables derived in
 //     CGAL's numbering; the last level's arrays moved into the result.
-//   CGAL's hosts for the others (and for all with cgal_hosts): a
-//     Surface_mesh built, refined by Subdivision_method_3 -- Doo-Sabin on
-//     open meshes by the border-aware DQQ host of dqq_border_3.h, sqrt(3)
-//     refining the border on every second step (the parity carried through
-//     Subdivide_options::start_level), quad-triangle by quad_triangle_3.h --
-//     then back to buffers.
+//   CGAL's hosts with cgal_hosts (the reference the fast hosts are tested
+//     against): a Surface_mesh built, refined by Subdivision_method_3 --
+//     Doo-Sabin on open meshes by the border-aware DQQ host of
+//     dqq_border_3.h, sqrt(3) refining the border on every second step (the
+//     parity carried through Subdivide_options::start_level), quad-triangle
+//     by quad_triangle_3.h -- then back to buffers.
 
 #include "subdivide.h"
 
@@ -438,6 +438,22 @@ Status run_sqrt3_steps(refine::Level& parent, Counts counts,
       });
 }
 
+/// The PQT host (quad-triangle; `mask` from refine::quad_triangle_mask).
+Status run_pqt_steps(refine::Level& parent, Counts counts, double marks,
+                     const refine::Quad_triangle_mask& mask,
+                     const Subdivide_options& options, const Mesh_buffers& in,
+                     double input, Mesh_buffers& out, int& level) {
+  refine::Primal_scratch scratch;
+  return run_fast_steps(
+      parent, counts, marks, options, in, input, out, level,
+      [&](const refine::Level& p, refine::Level& c, int, bool last) {
+        refine::refine_pqt_topology(p, c, last);
+        refine::refine_pqt_points(p, mask, scratch, c);
+        return Status::success();
+      },
+      [&] { scratch = refine::Primal_scratch(); });
+}
+
 }  // namespace
 
 /// Runs ONE step of `options.scheme` on `mesh`. `level_index` counts the
@@ -554,8 +570,10 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
         refine::dual_mask(options.scheme, options.custom);
     const refine::Primal_mask_lookup sqrt3 =
         refine::sqrt3_mask(options.scheme, options.custom);
-    if ((fast.ok || dual.ok || sqrt3.ok) && runs_on_fast_host(options) &&
-        options.levels > 0) {
+    const refine::Quad_triangle_mask_lookup pqt =
+        refine::quad_triangle_mask(options.scheme, options.smooth_boundary);
+    if ((fast.ok || dual.ok || sqrt3.ok || pqt.ok) &&
+        runs_on_fast_host(options) && options.levels > 0) {
       refine::Level level0;
       Counts counts;
       double marks = 0;
@@ -569,6 +587,9 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       else if (s.ok() && sqrt3.ok)
         s = run_sqrt3_steps(level0, counts, sqrt3.mask, options, in, input,
                             result.value, level);
+      else if (s.ok() && pqt.ok)
+        s = run_pqt_steps(level0, counts, marks, pqt.mask, options, in, input,
+                          result.value, level);
       else if (s.ok())
         s = run_dual_steps(level0, counts, dual.mask, options, in, input,
                            result.value, level);

@@ -23,12 +23,23 @@
 //   one. Quads: v1 -> b + k - 2, v2 -> b, v3 -> f, v_j -> b + j - 3. Each
 //   quad (c, m_j-1, v_j, m_j) starts at c -> m_j-1 for j <= 2 and at
 //   m_j -> c after, as the last split_face set it.
-// PTQ, per face (new edges 2E + 3f ...): split_face(v1->m1, v2->m2) adds
+// PTQ, per face (first new edge 2E + 3f = 2E + offset(f), first new face
+//   F + 3f): split_face(v1->m1, v2->m2) adds
 //   m1-m2 (even m1 -> m2) and face F + 3f (corner v2); split_face(m1->m2,
 //   v3->m3) adds m2-m3 and F + 3f + 1 (corner v3); split_face(m2->m3,
 //   v1->m1) adds m3-m1 and F + 3f + 2 (corner v1); f keeps the middle
 //   triangle. Each corner triangle starts at its inner edge's odd halfedge,
 //   the middle one at m3 -> m1.
+// PQT (core/quad_triangle_3.h's PQT_1step): the same edge splits, then each
+//   face in order split as PTQ splits a triangle and as PQQ splits any other
+//   face, each adding its new edges, vertex and faces after the previous
+//   face's. A triangle adds 3 edges and 3 faces, a k-gon k edges, k - 1
+//   faces and a face point; so with q the polygons (faces other than
+//   triangles) before f, f's first new edge is 2E + offset(f), its face
+//   point V + E + q, its first new face F + offset(f) - q. The child mixes
+//   triangles and quads: the kept faces first (face g's corners after
+//   3g + q(g)), then the new ones, f's after 3F + Q + 4 offset(f) - 3f - q
+//   (Q polygons in all).
 
 #include "primal_hosts.h"
 
@@ -62,7 +73,6 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
   const std::uint32_t V = p.vertex_count, E = p.edge_count;
   c.edge_count = child_edges;
   c.border_edge_count = 2 * p.border_edge_count;
-  c.face_offsets = {};
   size_to(c.face_vertices, child_corners);
   if (parts.halfedges) {
     size_to(c.face_halfedges, child_corners);
@@ -125,20 +135,143 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
   }
 }
 
-/// Writes child face `face`: its vertices, and (unless it is the last
-/// level) its halfedges and their corners.
+/// Where one parent face's children go: its first new edge, vertex (the
+/// face point of a PQQ split) and face (the others follow it), where the
+/// face that keeps its index starts its corners, and where its first new
+/// face does (the others follow, a face's degree apart).
+struct Face_slots {
+  std::uint32_t first_edge, centre, first_face, kept_corner, first_corner;
+};
+
+/// What the per-face splits write into: the child's tables (null where
+/// the child has none: halfedges on the last level, targets there unless
+/// edges are marked, offsets unless it mixes degrees).
+struct Child {
+  std::uint32_t *vertices, *halfedges, *corner, *target, *offsets;
+  Child(Level& c, const Parts& parts)
+      : vertices(c.face_vertices.data()),
+        halfedges(parts.halfedges ? c.face_halfedges.data() : nullptr),
+        corner(parts.halfedges ? c.halfedge_corner.data() : nullptr),
+        target(parts.targets ? c.halfedge_target.data() : nullptr),
+        offsets(c.uniform_degree == 0 ? c.face_offsets.data() : nullptr) {}
+};
+
+/// Writes child face `face`, whose corners start at `corner`: its vertices,
+/// its offset on a mixed child, and (unless it is the last level) its
+/// halfedges and their corners.
 template <std::uint32_t K>
-inline void put_face(Level& c, std::uint32_t face, const std::uint32_t (&v)[K],
-                     const std::uint32_t (&h)[K], const Parts& parts) {
-  std::uint32_t* vertices = c.face_vertices.data() + std::size_t{K} * face;
+inline void put_face(const Child& out, std::uint32_t face, std::uint32_t corner,
+                     const std::uint32_t (&v)[K], const std::uint32_t (&h)[K]) {
+  std::uint32_t* vertices = out.vertices + corner;
   for (std::uint32_t r = 0; r < K; ++r) vertices[r] = v[r];
-  if (!parts.halfedges) return;
-  std::uint32_t* out = c.face_halfedges.data() + std::size_t{K} * face;
-  std::uint32_t* corner = c.halfedge_corner.data();
+  if (out.offsets != nullptr) out.offsets[face] = corner;
+  if (out.halfedges == nullptr) return;
+  std::uint32_t* fh = out.halfedges + corner;
   for (std::uint32_t r = 0; r < K; ++r) {
-    out[r] = h[r];
-    corner[h[r]] = K * face + r;
+    fh[r] = h[r];
+    out.corner[h[r]] = corner + r;
   }
+}
+
+/// What the per-face splits read: the parent's counts and corner tables,
+/// held apart from the Level (the splits' stores could alias its counts).
+struct Parent {
+  std::uint32_t V, E;
+  const std::uint32_t *halfedges, *vertices;
+  explicit Parent(const Level& p)
+      : V(p.vertex_count),
+        E(p.edge_count),
+        halfedges(p.face_halfedges.data()),
+        vertices(p.face_vertices.data()) {}
+};
+
+/// PQQ_1step's split of parent face f (corners [begin, begin + k)): k quads
+/// around the face point. Inlined into each host's loop (two callers
+/// each: the compiler would call it, 15-25% slower on PTQ's topology).
+[[gnu::always_inline]] inline void split_pqq_face(
+    const Parent p, const Child& out, std::uint32_t f, std::uint32_t begin,
+    std::uint32_t k, const Face_slots& s) {
+  const std::uint32_t V = p.V, E = p.E;
+  const std::uint32_t* fh = p.halfedges + begin;
+  const std::uint32_t* fv = p.vertices + begin;
+  const std::uint32_t start = first_corner_offset(fh, k);
+  // g(j) for j = 1..k runs v_j -> v_j+1, which ends at corner start + j.
+  auto at = [&](std::uint32_t j) {
+    const std::uint32_t i = start + j;
+    return i < k ? i : i - k;
+  };
+  auto g = [&](std::uint32_t j) { return fh[at(j)]; };
+  auto m = [&](std::uint32_t j) { return V + (g(j) >> 1); };
+  auto corner = [&](std::uint32_t face) {
+    return face == f ? s.kept_corner
+                     : s.first_corner + 4 * (face - s.first_face);
+  };
+  // Spoke j joins m_j and c: its halfedge m_j -> c (even, but odd for j=2).
+  auto into_centre = [&](std::uint32_t j) {
+    const std::uint32_t e = s.first_edge + j - 1;
+    return j == 2 ? 2 * e + 1 : 2 * e;
+  };
+  if (out.target != nullptr) {
+    for (std::uint32_t j = 1; j <= k; ++j) {
+      const std::uint32_t h = into_centre(j);
+      out.target[h] = s.centre;
+      out.target[h ^ 1] = m(j);
+    }
+  }
+  for (std::uint32_t j = 1; j <= k; ++j) {
+    const std::uint32_t before = j == 1 ? k : j - 1;
+    const std::uint32_t vj = fv[at(before)], mb = m(before), mj = m(j);
+    const std::uint32_t from_centre = into_centre(before) ^ 1,
+                        in = second_half(g(before), E),
+                        out_half = first_half(g(j), E), back = into_centre(j);
+    if (j <= 2) {
+      const std::uint32_t face = j == 1 ? s.first_face + k - 2 : s.first_face;
+      put_face<4>(out, face, corner(face), {mb, vj, mj, s.centre},
+                  {from_centre, in, out_half, back});
+    } else {
+      const std::uint32_t face = j == 3 ? f : s.first_face + j - 3;
+      put_face<4>(out, face, corner(face), {s.centre, mb, vj, mj},
+                  {back, from_centre, in, out_half});
+    }
+  }
+}
+
+/// PTQ_1step's split of parent triangle f (corners from `begin`): the
+/// middle triangle keeps f, the corner ones follow. Inlined as above.
+[[gnu::always_inline]] inline void split_ptq_face(const Parent p,
+                                                  const Child& out,
+                                                  std::uint32_t f,
+                                                  std::uint32_t begin,
+                                                  const Face_slots& s) {
+  const std::uint32_t V = p.V, E = p.E;
+  const std::uint32_t* fh = p.halfedges + begin;
+  const std::uint32_t* fv = p.vertices + begin;
+  const std::uint32_t start = first_corner_offset(fh, 3);
+  const std::uint32_t i1 = start == 2 ? 0 : start + 1,
+                      i2 = start == 0 ? 2 : start - 1;
+  const std::uint32_t g1 = fh[i1], g2 = fh[i2], g3 = fh[start];
+  const std::uint32_t v1 = fv[start], v2 = fv[i1], v3 = fv[i2];
+  const std::uint32_t m1 = V + (g1 >> 1), m2 = V + (g2 >> 1),
+                      m3 = V + (g3 >> 1);
+  const std::uint32_t e = s.first_edge;
+  const std::uint32_t h12 = 2 * e, h23 = 2 * (e + 1), h31 = 2 * (e + 2);
+  if (out.target != nullptr) {
+    std::uint32_t* t = out.target;
+    t[h12] = m2;
+    t[h12 + 1] = m1;
+    t[h23] = m3;
+    t[h23 + 1] = m2;
+    t[h31] = m1;
+    t[h31 + 1] = m3;
+  }
+  const std::uint32_t a = s.first_corner;
+  put_face<3>(out, f, s.kept_corner, {m1, m2, m3}, {h31, h12, h23});
+  put_face<3>(out, s.first_face, a, {m1, v2, m2},
+              {h12 + 1, second_half(g1, E), first_half(g2, E)});
+  put_face<3>(out, s.first_face + 1, a + 3, {m2, v3, m3},
+              {h23 + 1, second_half(g2, E), first_half(g3, E)});
+  put_face<3>(out, s.first_face + 2, a + 6, {m3, v1, m1},
+              {h31 + 1, second_half(g3, E), first_half(g1, E)});
 }
 
 }  // namespace
@@ -151,47 +284,15 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
   c.vertex_count = V + E + F;
   c.face_count = S;
   c.uniform_degree = 4;
-  std::uint32_t* t = c.halfedge_target.data();
+  c.face_offsets = {};
+  const Child out(c, parts);
+  const Parent in(p);
   for (std::uint32_t f = 0; f < F; ++f) {
     const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
-    const std::uint32_t* fh = p.face_halfedges.data() + begin;
-    const std::uint32_t* fv = p.face_vertices.data() + begin;
-    const std::uint32_t start = first_corner_offset(fh, k);
-    // g(j) for j = 1..k runs v_j -> v_j+1, which ends at corner start + j.
-    auto at = [&](std::uint32_t j) {
-      const std::uint32_t i = start + j;
-      return i < k ? i : i - k;
-    };
-    auto g = [&](std::uint32_t j) { return fh[at(j)]; };
-    auto m = [&](std::uint32_t j) { return V + (g(j) >> 1); };
-    const std::uint32_t centre = V + E + f, first_edge = 2 * E + begin,
-                        first_face = F + begin - f;
-    // Spoke j joins m_j and c: its halfedge m_j -> c (even, but odd for j=2).
-    auto into_centre = [&](std::uint32_t j) {
-      const std::uint32_t e = first_edge + j - 1;
-      return j == 2 ? 2 * e + 1 : 2 * e;
-    };
-    if (parts.targets) {
-      for (std::uint32_t j = 1; j <= k; ++j) {
-        const std::uint32_t h = into_centre(j);
-        t[h] = centre;
-        t[h ^ 1] = m(j);
-      }
-    }
-    for (std::uint32_t j = 1; j <= k; ++j) {
-      const std::uint32_t before = j == 1 ? k : j - 1;
-      const std::uint32_t vj = fv[at(before)], mb = m(before), mj = m(j);
-      const std::uint32_t from_centre = into_centre(before) ^ 1,
-                          in = second_half(g(before), E),
-                          out = first_half(g(j), E), back = into_centre(j);
-      if (j <= 2) {
-        put_face<4>(c, j == 1 ? first_face + k - 2 : first_face,
-                    {mb, vj, mj, centre}, {from_centre, in, out, back}, parts);
-      } else {
-        put_face<4>(c, j == 3 ? f : first_face + j - 3, {centre, mb, vj, mj},
-                    {back, from_centre, in, out}, parts);
-      }
-    }
+    const std::uint32_t first_face = F + begin - f;
+    split_pqq_face(
+        in, out, f, begin, k,
+        {2 * E + begin, V + E + f, first_face, 4 * f, 4 * first_face});
   }
 }
 
@@ -202,34 +303,54 @@ void refine_ptq_topology(const Level& p, Level& c, bool last) {
   c.vertex_count = V + E;
   c.face_count = 4 * F;
   c.uniform_degree = 3;
-  std::uint32_t* t = c.halfedge_target.data();
+  c.face_offsets = {};
+  const Child out(c, parts);
+  const Parent in(p);
+  for (std::uint32_t f = 0; f < F; ++f)
+    split_ptq_face(in, out, f, 3 * f,
+                   {2 * E + 3 * f, kNone, F + 3 * f, 3 * f, 3 * (F + 3 * f)});
+}
+
+std::uint32_t polygon_count(const Level& l) {
+  if (l.uniform_degree != 0) return l.uniform_degree == 3 ? 0 : l.face_count;
+  std::uint32_t count = 0;
+  for (std::uint32_t f = 0; f < l.face_count; ++f)
+    count += l.face_offsets[f + 1] - l.face_offsets[f] != 3 ? 1 : 0;
+  return count;
+}
+
+void refine_pqt_topology(const Level& p, Level& c, bool last) {
+  const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
+                      S = p.corner_count(), Q = polygon_count(p);
+  const Parts parts(last);
+  split_edges(p, c, 2 * E + S, 4 * std::size_t{S}, parts);
+  c.vertex_count = V + E + Q;
+  c.face_count = F + S - Q;
+  // Triangles give triangles, the others quads.
+  c.uniform_degree = Q == 0 ? 3 : Q == F ? 4 : 0;
+  if (c.uniform_degree == 0) {
+    size_to(c.face_offsets, std::size_t{c.face_count} + 1);
+    c.face_offsets[c.face_count] = 4 * S;
+  } else {
+    c.face_offsets = {};
+  }
+  const Child out(c, parts);
+  const Parent in(p);
+  // q: the polygons before f. The kept faces come first (f's 3 or 4
+  // corners after 3f + q), then each face's new ones: 3 triangles after a
+  // triangle, k - 1 quads after a k-gon, so 4 begin - 3f - q corners
+  // before f's.
+  std::uint32_t q = 0;
   for (std::uint32_t f = 0; f < F; ++f) {
-    const std::uint32_t* fh = p.face_halfedges.data() + 3 * std::size_t{f};
-    const std::uint32_t* fv = p.face_vertices.data() + 3 * std::size_t{f};
-    const std::uint32_t start = first_corner_offset(fh, 3);
-    const std::uint32_t i1 = start == 2 ? 0 : start + 1,
-                        i2 = start == 0 ? 2 : start - 1;
-    const std::uint32_t g1 = fh[i1], g2 = fh[i2], g3 = fh[start];
-    const std::uint32_t v1 = fv[start], v2 = fv[i1], v3 = fv[i2];
-    const std::uint32_t m1 = V + (g1 >> 1), m2 = V + (g2 >> 1),
-                        m3 = V + (g3 >> 1);
-    const std::uint32_t e = 2 * E + 3 * f;
-    const std::uint32_t h12 = 2 * e, h23 = 2 * (e + 1), h31 = 2 * (e + 2);
-    if (parts.targets) {
-      t[h12] = m2;
-      t[h12 + 1] = m1;
-      t[h23] = m3;
-      t[h23 + 1] = m2;
-      t[h31] = m1;
-      t[h31 + 1] = m3;
+    const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
+    const Face_slots s{2 * E + begin, V + E + q, F + begin - q, 3 * f + q,
+                       3 * F + Q + 4 * begin - 3 * f - q};
+    if (k == 3) {
+      split_ptq_face(in, out, f, begin, s);
+    } else {
+      split_pqq_face(in, out, f, begin, k, s);
+      ++q;
     }
-    put_face<3>(c, f, {m1, m2, m3}, {h31, h12, h23}, parts);
-    put_face<3>(c, F + 3 * f, {m1, v2, m2},
-                {h12 + 1, second_half(g1, E), first_half(g2, E)}, parts);
-    put_face<3>(c, F + 3 * f + 1, {m2, v3, m3},
-                {h23 + 1, second_half(g2, E), first_half(g3, E)}, parts);
-    put_face<3>(c, F + 3 * f + 2, {m3, v1, m1},
-                {h31 + 1, second_half(g3, E), first_half(g1, E)}, parts);
   }
 }
 

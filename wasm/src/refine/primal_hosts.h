@@ -1,13 +1,16 @@
 // The primal refinement hosts on flat tables: PQQ (every k-gon into k quads
-// around a face point, as CGAL's PQQ_1step) and PTQ (every triangle into
-// four, as PTQ_1step). Topology only: the masks (primal_masks.h) compute
-// the points. Owner: primal_hosts.cpp.
+// around a face point, as CGAL's PQQ_1step), PTQ (every triangle into
+// four, as PTQ_1step) and PQT (quad-triangle's: triangles as PTQ, the other
+// faces as PQQ, as core/quad_triangle_3.h's PQT_1step). Topology only: the
+// masks (primal_masks.h) compute the points. Owner: primal_hosts.cpp.
 //
 // A child level's tables come from the parent's by arithmetic, in CGAL's
 // numbering (refine_level.h). Vertices: the parent's v keeps v, edge e's
 // point is V + e, face f's point (PQQ) V + E + f. Edges: edge e splits
 // into e (its source half) and E + e; then every face in order adds its
-// spokes (PQQ: one per corner) or its inner triangle's edges (PTQ: three).
+// spokes (PQQ: one per corner) or its inner triangle's edges (PTQ: three;
+// PQT: either, by the face's degree, the face points numbered among the
+// faces that are not triangles).
 // CGAL splits the edges in index order, and each split points the faces
 // beside it at the new half; so a face's corners are taken from the end of
 // its edge of highest index (v1 below), and its children are numbered as
@@ -25,6 +28,12 @@ namespace refine {
 /// vectors are reused. Preconditions: a valid level; PTQ: triangles.
 void refine_pqq_topology(const Level& parent, Level& child, bool last);
 void refine_ptq_topology(const Level& parent, Level& child, bool last);
+/// PQT: any faces; the child holds triangles and quads, its face_offsets
+/// set when it holds both (uniform_degree 0).
+void refine_pqt_topology(const Level& parent, Level& child, bool last);
+
+/// Faces of `level` that are not triangles (PQT's face points).
+std::uint32_t polygon_count(const Level& level);
 
 /// Position of the corner, in parent face f (corners [begin, end)), that
 /// starts the CGAL corner order v1, v2, ...: the corner after the halfedge

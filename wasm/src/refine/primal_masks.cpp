@@ -82,5 +82,32 @@ Primal_mask_lookup sqrt3_mask(const std::string& scheme,
   return r;
 }
 
+double quad_triangle_relaxation(std::size_t nq, std::size_t nt) {
+  const double span = 3.0 * double(nq) + 2.0 * double(nt);  // angle / 30 deg
+  if (span == 12.0) return 1.0;
+  double lambda = 0.0;
+  if (nq > 0) {
+    // Catmull-Clark at valence n: (4 + 3n) / n^2.
+    const double n = span / 3.0;
+    lambda += double(nq) * (4.0 + 3.0 * n) / (n * n);
+  }
+  if (nt > 0) {
+    // Loop at valence n: (4 + 2n) c(n) / n, c(n) = n beta(n).
+    const double n = span / 2.0;
+    const double t = 3.0 + 2.0 * std::cos(2.0 * CGAL_PI / n);
+    const double c = 5.0 / 8.0 - t * t / 64.0;
+    lambda += double(nt) * (4.0 + 2.0 * n) * c / n;
+  }
+  return lambda / double(nq + nt);
+}
+
+Quad_triangle_mask_lookup quad_triangle_mask(const std::string& scheme,
+                                             bool smooth_boundary) {
+  Quad_triangle_mask_lookup r;
+  r.ok = scheme == "quad-triangle";
+  r.mask.smooth_boundary = smooth_boundary;
+  return r;
+}
+
 }  // namespace refine
 }  // namespace subdivlab

@@ -3,7 +3,8 @@
 // form of custom rules (custom_rules.h) so that built-in and custom schemes run
 // through one kernel. The weights of Catmull-Clark, Loop, sqrt(3) and the
 // linear schemes are defined here once; the custom-rule presets read them from
-// here.
+// here. So are quad/triangle's (Quad_triangle_mask, for the PQT host), which
+// CGAL's route (core/quad_triangle_3.h) reads too.
 //
 // Rules (p = the parent points; wings = the face points of the two faces of
 // an edge on PQQ, the vertices opposite it on PTQ):
@@ -17,7 +18,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/custom_rules.h"
@@ -88,6 +91,55 @@ Primal_mask_lookup primal_mask(const std::string& scheme,
 /// are not. Sqrt3_mask_3's border: 1/27 (1, 16, 10, 0) and (4, 19, 4).
 Primal_mask_lookup sqrt3_mask(const std::string& scheme,
                               const Custom_rules& custom);
+
+/// Relaxation factor lambda of the quad/triangle averaging at an interior
+/// vertex of the refined mesh with `nq` incident quads and `nt` incident
+/// triangles: 1 where the corner angles (quad 90 deg, triangle 60 deg) add
+/// up to 360 deg, else the corner-count blend of Catmull-Clark's and Loop's
+/// corrections (core/quad_triangle_3.h explains it). Precondition:
+/// nq + nt > 0.
+double quad_triangle_relaxation(std::size_t nq, std::size_t nt);
+
+/// Quad/triangle's averaging (Stam & Loop; core/quad_triangle_3.h), read on
+/// the mesh the linear refinement made (edge midpoints, a centroid per face
+/// that is not a triangle; PQT host, primal_hosts.h). An interior vertex v
+/// with ne edges and nq incident quads goes to
+///   A = alpha (self v + ring sum(edge neighbours)
+///              + opposite sum(quad corners opposite v)),
+///   alpha = 1 / (self + ring ne + opposite nq),
+/// then v' = v + lambda (A - v), lambda = quad_triangle_relaxation(nq,
+/// ne - nq). A border vertex goes to border . (prev, v, next) along the
+/// refined border when smooth_boundary, else stays.
+struct Quad_triangle_mask {
+  double self = 1.0, ring = 0.5, opposite = 0.25;
+  std::array<double, 3> border{0.25, 0.5, 0.25};
+  bool smooth_boundary = true;
+
+  struct Averaging {
+    double alpha, lambda;
+  };
+  /// alpha and lambda of an interior vertex (ne edges, nq quads, ne > 0).
+  Averaging averaging(std::uint32_t ne, std::uint32_t nq) const {
+    return {1.0 / (self + ring * ne + opposite * nq),
+            quad_triangle_relaxation(nq, ne - nq)};
+  }
+  /// The same as v' = self v + neighbour sum(edge neighbours) + face
+  /// sum(opposite quad corners).
+  Vertex_weights vertex_weights(std::uint32_t ne, std::uint32_t nq) const {
+    const Averaging a = averaging(ne, nq);
+    const double average = a.lambda * a.alpha;
+    return {1.0 - a.lambda + average * self, average * ring,
+            average * opposite};
+  }
+};
+
+/// The mask of quad-triangle (`ok` false for any other scheme).
+struct Quad_triangle_mask_lookup {
+  bool ok = false;
+  Quad_triangle_mask mask;
+};
+Quad_triangle_mask_lookup quad_triangle_mask(const std::string& scheme,
+                                             bool smooth_boundary);
 
 }  // namespace refine
 }  // namespace subdivlab

@@ -40,8 +40,9 @@ constexpr std::uint32_t kNone = 0xffffffffu;
 
 struct Level {
   std::uint32_t vertex_count = 0, edge_count = 0, face_count = 0;
-  /// Degree of every face when they all have the same one (every level a
-  /// host made), else 0 and face_offsets says.
+  /// Degree of every face when they all have the same one (the PQQ, PTQ
+  /// and sqrt3 hosts' levels), else 0 and face_offsets says (a mixed level
+  /// 0, DQQ's levels, PQT's that hold triangles and quads).
   std::uint32_t uniform_degree = 0;
   /// face f's corners are [face_offsets[f], face_offsets[f + 1]); empty
   /// when uniform_degree != 0.
@@ -76,7 +77,7 @@ struct Level {
   std::uint32_t face_end(std::uint32_t f) const {
     return uniform_degree != 0 ? (f + 1) * uniform_degree : face_offsets[f + 1];
   }
-  /// The face of a corner (a search only on a mixed level, the first).
+  /// The face of a corner (a search on a mixed level).
   std::uint32_t corner_face(std::uint32_t c) const {
     if (uniform_degree != 0) return c / uniform_degree;
     return static_cast<std::uint32_t>(
