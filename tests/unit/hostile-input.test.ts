@@ -69,8 +69,8 @@ describe('predictions beyond 32 bits', () => {
     // Catmull-Clark on the cube: F = 6 * 4^16 quads, E = 2F, V = E - F + 2.
     const p = predictSize(loadFixture('cube.off'), { scheme: 'catmull-clark', levels: 16 });
     expect([p.vertices, p.edges, p.faces]).toEqual([25769803778, 51539607552, 25769803776]);
-    // Some hundred bytes per face: far beyond 4 GB.
-    expect(p.peakBytes).toBeGreaterThan(100 * 25769803776);
+    // Tens of bytes per face (73 since the primal points need no scratch): far beyond 4 GB.
+    expect(p.peakBytes).toBeGreaterThan(50 * 25769803776);
   });
 });
 
