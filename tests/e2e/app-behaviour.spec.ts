@@ -113,8 +113,8 @@ test('a step over the memory budget asks first, in the page', async ({ app }) =>
 test('a long step shows progress, keeps the page responsive and can be cancelled', async ({ app }) => {
   test.setTimeout(120_000);
   await app.open();
-  // 250 000 quads: Catmull-Clark level 1 takes about a second in WebAssembly.
-  await app.load('grid-500.off', quadGridOff(500));
+  // 1 000 000 quads: Catmull-Clark level 1 (4 M quads) and its render buffers take about a second in WebAssembly.
+  await app.load('grid-1000.off', quadGridOff(1000));
   await app.byTestId('controls.subdivide').click();
   await expect(app.byTestId('progress')).toBeVisible();
   await expect(app.byTestId('progress.label')).toHaveText('Subdividing to level 1…');
@@ -127,8 +127,8 @@ test('a long step shows progress, keeps the page responsive and can be cancelled
   await app.byTestId('progress.cancel').click();
   await expect(app.byTestId('progress')).toBeHidden();
   const state = await app.state();
-  expect(state).toMatchObject({ busy: false, level: 0, levelCount: 1, modelName: 'grid-500.off' });
-  expect((await app.facts()).faces).toBe(250_000);
+  expect(state).toMatchObject({ busy: false, level: 0, levelCount: 1, modelName: 'grid-1000.off' });
+  expect((await app.facts()).faces).toBe(1_000_000);
   await test.step('a fresh worker takes over', async () => {
     await app.load('cube.off', CUBE);
     await app.subdivide();
