@@ -362,6 +362,23 @@ TEST(BuildMesh, AFanOfThreeHundredThousandTrianglesAroundOneVertex) {
             "(faces 0, 1 and 299999)");
 }
 
+TEST(BuildErrors, NonManifoldVertexOfTwoFansOfManyTriangles) {
+  // Vertex 0 has 18 corners (two fans of 9): the checks mark its ends in a
+  // table by vertex rather than searching its few corners, and still see
+  // two fans.
+  Mesh_buffers b = fan(10, false);
+  const Mesh_buffers other = fan(10, false);
+  b.positions.insert(b.positions.end(), other.positions.begin() + 3,
+                     other.positions.end());
+  for (std::uint32_t f = 0; f < 9; ++f) {
+    b.face_sizes.push_back(3);
+    b.face_indices.insert(b.face_indices.end(), {0, 11 + f, 12 + f});
+  }
+  EXPECT_EQ(build_error(b),
+            "non-manifold vertex 0: its faces form 2 separate fans that meet "
+            "only at this vertex (faces 0 and 9)");
+}
+
 TEST(BuildErrors, NonManifoldVertexOfTwoClosedCones) {
   // Two tetrahedra glued at one vertex (vertex 0): every edge is fine, the
   // vertex is not.

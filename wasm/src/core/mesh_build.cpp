@@ -125,8 +125,9 @@ struct Leaving<true> {
 /// arriving before each corner leaving v takes v -> a as its opposite; and
 /// that step, from a corner leaving v to the one leaving v after the
 /// opposite of its predecessor, must chain all of v's corners from one
-/// start (the one nothing leads to, on a border): one fan. The ends are
-/// marked in a table by vertex (stamped with v), and the chain is walked in
+/// start (the one nothing leads to, on a border): one fan. A vertex with a
+/// few corners (most) finds ends in its own list, by pairs; one with many
+/// marks them in a table by vertex (stamped with v). The chain is walked in
 /// v's own list, so that the work is linear in the corners whatever the
 /// valences (a fan of a million triangles included) and mostly reads the
 /// list in order. `Numbered` (corner_halfedges given) also pairs the corners
@@ -166,35 +167,35 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   }
   std::vector<std::uint32_t> opposite(Numbered ? corners : 0, none);
   // Per vertex: the vertex stamp it was last marked for and its position in
-  // that vertex's list, side by side (one cache line per lookup).
+  // that vertex's list, side by side (one cache line per lookup). Only
+  // vertices with many corners use it: a few corners are searched in their
+  // own list, which is in cache, where a mark is a miss in a table by vertex.
   struct Mark {
     std::uint32_t stamp, at;
   };
-  std::vector<Mark> mark(nv, Mark{none, 0});
+  constexpr std::uint32_t kFew = 16;
+  std::vector<Mark> mark;  // taken at the first vertex with many corners
   // The chain at the vertex at hand, by position in its list.
-  std::vector<std::uint32_t> step;
-  std::vector<std::uint8_t> led_to;
-  for (std::size_t v = 0; v < nv; ++v) {
-    const std::uint32_t b = start[v], e = start[v + 1], n = e - b;
-    const std::uint32_t stamp = static_cast<std::uint32_t>(v);
-    for (std::uint32_t i = b; i < e; ++i) {
-      Mark& m = mark[leaving[i].to];
-      if (m.stamp == stamp) return false;
-      m = Mark{stamp, i - b};
-    }
-    if (n < 2 && !Numbered) continue;
-    step.assign(n, none);
-    led_to.assign(n, 0);
-    for (std::uint32_t i = b; i < e; ++i) {
-      const Mark m = mark[leaving[i].from];
-      if (m.stamp != stamp) continue;  // a border edge arrives here
-      const std::uint32_t j = m.at;
-      if constexpr (Numbered)
-        opposite[leaving[i].arriving] = leaving[b + j].corner;
-      step[i - b] = j;
+  std::vector<std::uint32_t> many_step;
+  std::vector<std::uint8_t> many_led_to;
+  std::uint32_t few_step[kFew];
+  std::uint8_t few_led_to[kFew];
+  // Pairs the n corners leaving a vertex (`list`) with the corners before
+  // them and walks the chain; `find(u)` is where in the list the corner to
+  // u is, or none. False when they do not make one fan.
+  const auto pair_and_walk = [&](const Leaving<Numbered>* list, std::uint32_t n,
+                                 std::uint32_t* step, std::uint8_t* led_to,
+                                 auto&& find) {
+    std::fill(step, step + n, none);
+    std::fill(led_to, led_to + n, 0);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::uint32_t j = find(list[i].from);
+      if (j == none) continue;  // a border edge arrives here
+      if constexpr (Numbered) opposite[list[i].arriving] = list[j].corner;
+      step[i] = j;
       led_to[j] = 1;
     }
-    if (n < 2) continue;
+    if (n < 2) return true;
     std::uint32_t first = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
       if (led_to[i] != 0) continue;
@@ -205,7 +206,39 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
     for (std::uint32_t i = step[first]; i != none && i != first; i = step[i]) {
       if (++walked > n) return false;
     }
-    if (walked != n) return false;
+    return walked == n;
+  };
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::uint32_t b = start[v], n = start[v + 1] - b;
+    if (n < 2 && !Numbered) continue;
+    const Leaving<Numbered>* list = &leaving[b];
+    bool fan = false;
+    if (n <= kFew) {
+      for (std::uint32_t i = 0; i + 1 < n; ++i)
+        for (std::uint32_t j = i + 1; j < n; ++j)
+          if (list[i].to == list[j].to) return false;
+      fan = pair_and_walk(list, n, few_step, few_led_to, [&](std::uint32_t u) {
+        for (std::uint32_t j = 0; j < n; ++j)
+          if (list[j].to == u) return j;
+        return none;
+      });
+    } else {
+      const auto stamp = static_cast<std::uint32_t>(v);
+      if (mark.empty()) mark.assign(nv, Mark{none, 0});
+      for (std::uint32_t i = 0; i < n; ++i) {
+        Mark& m = mark[list[i].to];
+        if (m.stamp == stamp) return false;
+        m = Mark{stamp, i};
+      }
+      many_step.resize(n);
+      many_led_to.resize(n);
+      fan = pair_and_walk(list, n, many_step.data(), many_led_to.data(),
+                          [&](std::uint32_t u) {
+                            const Mark m = mark[u];
+                            return m.stamp == stamp ? m.at : none;
+                          });
+    }
+    if (!fan) return false;
   }
   if constexpr (Numbered) {
     std::vector<std::uint32_t>& out = *corner_halfedges;
