@@ -2,6 +2,7 @@
 
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <utility>
 
 namespace subdivlab {
@@ -61,6 +62,44 @@ Level level_from_mesh(const Mesh& mesh) {
   return l;
 }
 
+namespace {
+
+/// level_from_buffers' corner tables, with `vertex` giving each input
+/// vertex's index in the level.
+template <class Vertex>
+void fill_corners(const Mesh_buffers& in,
+                  const std::vector<std::uint32_t>& corner_halfedges,
+                  Vertex&& vertex, Level& l) {
+  const std::uint32_t* idx = in.face_indices.data();
+  const std::uint32_t* sizes = in.face_sizes.data();
+  std::uint32_t* face_halfedges = l.face_halfedges.data();
+  std::uint32_t* face_vertices = l.face_vertices.data();
+  std::uint32_t* corner = l.halfedge_corner.data();
+  std::uint32_t* target = l.halfedge_target.data();
+  std::uint32_t* offsets = l.face_offsets.data();
+  std::uint32_t o = 0;
+  for (std::uint32_t f = 0; f < l.face_count; ++f) {
+    const std::uint32_t k = sizes[f];
+    offsets[f] = o;
+    // Surface_mesh::add_face starts the face at its last corner's halfedge:
+    // corner j of the level is the input's corner j - 1, which ends at j.
+    for (std::uint32_t j = 0; j < k; ++j) {
+      const std::uint32_t from = o + (j == 0 ? k - 1 : j - 1);
+      const std::uint32_t h = corner_halfedges[from];
+      const std::uint32_t v = vertex(idx[o + j]);
+      face_halfedges[o + j] = h;
+      corner[h] = o + j;
+      face_vertices[o + j] = v;
+      target[h] = v;
+      target[h ^ 1] = vertex(idx[from]);
+    }
+    o += k;
+  }
+  offsets[l.face_count] = o;
+}
+
+}  // namespace
+
 Level level_from_buffers(const Mesh_buffers& in,
                          const std::vector<std::uint32_t>& corner_halfedges) {
   Level l;
@@ -71,11 +110,18 @@ Level level_from_buffers(const Mesh_buffers& in,
   for (std::uint32_t& r : rank)
     if (r == 0) r = used++;
   l.vertex_count = used;
-  l.positions.resize(3 * std::size_t{used});
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (rank[v] == kNone) continue;
-    for (int i = 0; i < 3; ++i)
-      l.positions[3 * std::size_t{rank[v]} + i] = in.positions[3 * v + i];
+  // Every vertex used (nearly always): the level keeps the input's indices.
+  const bool all_used = used == nv;
+  if (all_used) {
+    rank = {};
+    l.positions = in.positions;
+  } else {
+    l.positions.resize(3 * std::size_t{used});
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (rank[v] == kNone) continue;
+      for (int i = 0; i < 3; ++i)
+        l.positions[3 * std::size_t{rank[v]} + i] = in.positions[3 * v + i];
+    }
   }
   std::uint32_t edges = 0;
   for (std::uint32_t h : corner_halfedges) edges += (h & 1) == 0;
@@ -89,28 +135,15 @@ Level level_from_buffers(const Mesh_buffers& in,
   l.face_halfedges.resize(corners);
   l.face_vertices.resize(corners);
   l.face_offsets.resize(std::size_t{l.face_count} + 1);
-  const std::uint32_t* idx = in.face_indices.data();
-  std::uint32_t o = 0, degree = in.face_sizes[0];
-  bool uniform = true;
-  for (std::uint32_t f = 0; f < l.face_count; ++f) {
-    const std::uint32_t k = in.face_sizes[f];
-    uniform = uniform && k == degree;
-    l.face_offsets[f] = o;
-    // Surface_mesh::add_face starts the face at its last corner's halfedge:
-    // corner j of the level is the input's corner j - 1, which ends at j.
-    for (std::uint32_t j = 0; j < k; ++j) {
-      const std::uint32_t from = o + (j == 0 ? k - 1 : j - 1);
-      const std::uint32_t h = corner_halfedges[from];
-      l.face_halfedges[o + j] = h;
-      l.halfedge_corner[h] = o + j;
-      l.face_vertices[o + j] = rank[idx[o + j]];
-      l.halfedge_target[h] = rank[idx[o + j]];
-      l.halfedge_target[h ^ 1] = rank[idx[from]];
-    }
-    o += k;
-  }
-  l.face_offsets[l.face_count] = o;
-  if (uniform) {
+  if (all_used)
+    fill_corners(
+        in, corner_halfedges, [](std::uint32_t v) { return v; }, l);
+  else
+    fill_corners(
+        in, corner_halfedges, [&](std::uint32_t v) { return rank[v]; }, l);
+  const std::uint32_t degree = in.face_sizes[0];
+  if (std::all_of(in.face_sizes.begin(), in.face_sizes.end(),
+                  [&](std::uint32_t k) { return k == degree; })) {
     l.uniform_degree = degree;
     l.face_offsets = {};
   }
