@@ -74,13 +74,17 @@ Result<Control_edges> initial_control_edges(const Mesh_buffers& in,
   std::vector<bool> seen(edge_count, false);
   for (std::size_t i = 0; i < in.control_edges.size(); i += 2) {
     const std::uint32_t a = in.control_edges[i], b = in.control_edges[i + 1];
-    const std::string name = "control edge " + std::to_string(i / 2) + " (" +
-                             std::to_string(a) + ", " + std::to_string(b) + ")";
+    // Named only when refused: a level's hundreds of thousands of edges
+    // would spend more on the names than on the checks.
+    const auto refuse = [&](const char* why) {
+      return fail("control edge " + std::to_string(i / 2) + " (" +
+                  std::to_string(a) + ", " + std::to_string(b) + ") " + why);
+    };
     if (a >= nv || b >= nv || rank[a] == 0xffffffffu || rank[b] == 0xffffffffu)
-      return fail(name + " names a vertex that is not in the mesh");
+      return refuse("names a vertex that is not in the mesh");
     const std::uint32_t e = edge_of(rank[a], rank[b]);
-    if (e == kNoEdge) return fail(name + " is not an edge of the mesh");
-    if (seen[e]) return fail(name + " repeats an earlier control edge");
+    if (e == kNoEdge) return refuse("is not an edge of the mesh");
+    if (seen[e]) return refuse("repeats an earlier control edge");
     seen[e] = true;
     r.value.emplace_back(rank[a], rank[b]);
   }
