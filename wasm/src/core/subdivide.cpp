@@ -311,14 +311,17 @@ Status prepare_level(const Mesh_buffers& in, const Subdivide_options& options,
     return Status::success();
   }
   const refine::Vertex_halfedges around = refine::vertex_halfedges(level);
+  // Every edge found is a control edge (or the run is refused): marked as
+  // it is found.
+  level.edge_marks.assign(level.edge_count, 0);
   const auto edge_of = [&](std::uint32_t a, std::uint32_t b) {
-    return around.edge(level, a, b);
+    const std::uint32_t e = around.edge(level, a, b);
+    if (e != kNoEdge) level.edge_marks[e] = 1;
+    return e;
   };
   const Result<Control_edges> control =
       initial_control_edges(in, level.edge_count, edge_of, options.start_level);
   if (!control.ok()) return control.status;
-  level.edge_marks.assign(level.edge_count, 0);
-  for (const auto& [a, b] : control.value) level.edge_marks[edge_of(a, b)] = 1;
   marks = static_cast<double>(control.value.size());
   return Status::success();
 }
