@@ -129,7 +129,10 @@ export class SubdivViewer {
     this.view.onDraw = () => {
       if (this.levels.length === 0) return;
       this.drawn = { level: this.current, at: performance.now() };
-      if (this.current === this.levels.length - 1 && !this.busyState && !this.stepping) this.predictAhead();
+      // Asked once the frame is on screen (two animation frames later: the
+      // browser holds them back while the GPU draws), so that the core's
+      // work does not compete with the drawing of a large level.
+      requestAnimationFrame(() => requestAnimationFrame(() => this.predictAheadIfIdle()));
     };
     this.view.onViewChange = () => {
       if (this.viewListeners.size === 0) return;
@@ -420,6 +423,12 @@ export class SubdivViewer {
     this.current = 0;
     if (this.levels.length > 0) this.show();
     else this.emit();
+  }
+
+  /** {@link predictAhead} when the last level is shown and no step is under way. */
+  private predictAheadIfIdle(): void {
+    if (this.disposed || this.levels.length === 0) return;
+    if (this.current === this.levels.length - 1 && !this.busyState && !this.stepping) this.predictAhead();
   }
 
   /** Asks the core for the size of the next step from the last level, unless already asked. */
