@@ -139,7 +139,11 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   const std::uint32_t corners = static_cast<std::uint32_t>(idx.size());
   std::vector<std::uint32_t> start(nv + 1, 0);
   for (std::uint32_t v : idx) ++start[v + 1];
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::uint32_t most = 0;  // the largest valence
+  for (std::size_t v = 0; v < nv; ++v) {
+    most = std::max(most, start[v + 1]);
+    start[v + 1] += start[v];
+  }
   // Not zeroed: every entry is written by the counting sort. Without
   // numbering an entry is 8 bytes, and the check alone (read_mesh) moves
   // half the memory.
@@ -171,9 +175,12 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
     std::uint32_t stamp, at;
   };
   std::vector<Mark> mark(nv, Mark{none, 0});
-  // The chain at the vertex at hand, by position in its list.
-  std::vector<std::uint32_t> step;
-  std::vector<std::uint8_t> led_to;
+  // The chain at the vertex at hand, by position in its list. Sized once
+  // and refilled in place: a call that may throw, such as assign, costs a
+  // JavaScript round trip per vertex in WebAssembly (Emscripten's
+  // exceptions), which was a third of the check.
+  std::vector<std::uint32_t> step(most);
+  std::vector<std::uint8_t> led_to(most);
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t b = start[v], e = start[v + 1], n = e - b;
     const std::uint32_t stamp = static_cast<std::uint32_t>(v);
@@ -183,8 +190,8 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
       m = Mark{stamp, i - b};
     }
     if (n < 2 && !Numbered) continue;
-    step.assign(n, none);
-    led_to.assign(n, 0);
+    std::fill_n(step.begin(), n, none);
+    std::fill_n(led_to.begin(), n, std::uint8_t{0});
     for (std::uint32_t i = b; i < e; ++i) {
       const Mark m = mark[leaving[i].from];
       if (m.stamp != stamp) continue;  // a border edge arrives here
