@@ -237,7 +237,10 @@ const char* fast_number(const Line_reader& in, const char* p, double& out) {
 }
 
 /// Unsigned digits at `p` (at most 10, no sign); where they end or nullptr.
-const char* scan_digits(const char* p, const char* end, std::uint64_t& out) {
+/// Inlined by force: em++ left it a call per index (6% of OFF's parse).
+[[gnu::always_inline]] inline const char* scan_digits(const char* p,
+                                                      const char* end,
+                                                      std::uint64_t& out) {
   const char* const start = p;
   std::uint64_t v = 0;
   while (p != end && static_cast<unsigned char>(*p - '0') < 10) {
