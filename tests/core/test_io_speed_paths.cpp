@@ -282,44 +282,50 @@ TEST(IoSpeedPaths, LinesTheFastReaderDeclinesAreReadByTheGeneralOne) {
             "(at most 4, a colour, may follow the indices)");
 }
 
+/// Every mesh in tests/fixtures, valid and invalid.
+const char* const fixture_names[] = {"cube.off",
+                                     "cube.obj",
+                                     "disk-tri.off",
+                                     "grid-open.off",
+                                     "icosahedron.off",
+                                     "mixed-open.off",
+                                     "octahedron.off",
+                                     "rhombicuboctahedron.off",
+                                     "tetrahedron.off",
+                                     "torus-quad.off",
+                                     "torus-tri.off",
+                                     "two-tetrahedra.off",
+                                     "invalid/extra-data.off",
+                                     "invalid/face-too-small.obj",
+                                     "invalid/huge-counts.off",
+                                     "invalid/inconsistent-orientation.off",
+                                     "invalid/index-out-of-range.off",
+                                     "invalid/no-faces.off",
+                                     "invalid/non-finite.off",
+                                     "invalid/non-manifold-edge.off",
+                                     "invalid/non-manifold-vertex.off",
+                                     "invalid/non-numeric.obj",
+                                     "invalid/repeated-vertex.obj",
+                                     "invalid/truncated.off",
+                                     "invalid/unknown-header.off"};
+
+/// A fixture's text and its format (by its name).
+std::pair<std::string, Mesh_format> read_fixture(const std::string& name) {
+  std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return {s.str(), name.substr(name.size() - 3) == "obj" ? Mesh_format::obj
+                                                         : Mesh_format::off};
+}
+
 // read_mesh without corner halfedges runs the check alone (8-byte corner
 // records, nothing paired); with them, the numbering check. Both must take
 // and refuse the same meshes with the same words and lines.
 TEST(IoSpeedPaths, TheCheckAloneAndTheNumberingCheckAgree) {
   std::vector<std::pair<std::string, Mesh_format>> texts;
-  for (const char* name : {"cube.off",
-                           "cube.obj",
-                           "disk-tri.off",
-                           "grid-open.off",
-                           "icosahedron.off",
-                           "mixed-open.off",
-                           "octahedron.off",
-                           "rhombicuboctahedron.off",
-                           "tetrahedron.off",
-                           "torus-quad.off",
-                           "torus-tri.off",
-                           "two-tetrahedra.off",
-                           "invalid/extra-data.off",
-                           "invalid/face-too-small.obj",
-                           "invalid/huge-counts.off",
-                           "invalid/inconsistent-orientation.off",
-                           "invalid/index-out-of-range.off",
-                           "invalid/no-faces.off",
-                           "invalid/non-finite.off",
-                           "invalid/non-manifold-edge.off",
-                           "invalid/non-manifold-vertex.off",
-                           "invalid/non-numeric.obj",
-                           "invalid/repeated-vertex.obj",
-                           "invalid/truncated.off",
-                           "invalid/unknown-header.off"}) {
-    std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
-    ASSERT_TRUE(in.good()) << name;
-    std::stringstream s;
-    s << in.rdbuf();
-    const std::string n = name;
-    texts.emplace_back(s.str(), n.substr(n.size() - 3) == "obj"
-                                    ? Mesh_format::obj
-                                    : Mesh_format::off);
+  for (const char* name : fixture_names) {
+    texts.push_back(read_fixture(name));
+    ASSERT_FALSE(texts.back().first.empty()) << name;
   }
   const std::string square =
       "OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n.5 .5 0\n";
@@ -354,6 +360,132 @@ TEST(IoSpeedPaths, TheCheckAloneAndTheNumberingCheckAgree) {
     }
   }
   EXPECT_EQ(refused, 13 + 3);
+}
+
+/// `mesh` as write_mesh writes it, with every `k`-th vertex line and every
+/// `k`-th face line (counting from `first`) in a form the fast path
+/// declines and the general path reads to the same values: a vertex line
+/// ends in "nan" (an extra value, accepted and not kept), a face's first
+/// index is written "+i".
+std::string with_general_lines(const Mesh_buffers& mesh, Mesh_format format,
+                               std::size_t k, std::size_t first) {
+  const std::string text = write_mesh(mesh, format);
+  const bool off = format == Mesh_format::off;
+  std::string out;
+  std::size_t vertex = 0, face = 0, line = 0, at = 0;
+  while (at < text.size()) {
+    const std::size_t end = text.find('\n', at);
+    std::string l = text.substr(at, end - at);
+    at = end + 1;
+    ++line;
+    const bool is_vertex =
+        off ? line > 2 && vertex < mesh.vertex_count() : l.rfind("v ", 0) == 0;
+    const bool is_face = off ? line > 2 && !is_vertex : l.rfind("f ", 0) == 0;
+    if (is_vertex && vertex++ % k == first % k) l += " nan";
+    if (is_face && face++ % k == first % k) {
+      const std::size_t space = l.find(' ');
+      l.insert(space + 1, "+");
+    }
+    out += l + "\n";
+  }
+  return out;
+}
+
+void expect_same_reading(const Result<Mesh_buffers>& a,
+                         const Result<Mesh_buffers>& b,
+                         const std::string& what) {
+  EXPECT_EQ(a.status.code, b.status.code) << what;
+  EXPECT_EQ(a.status.message, b.status.message) << what;
+  EXPECT_EQ(a.status.line, b.status.line) << what;
+  EXPECT_EQ(a.value.positions, b.value.positions) << what;
+  EXPECT_EQ(a.value.face_sizes, b.value.face_sizes) << what;
+  EXPECT_EQ(a.value.face_indices, b.value.face_indices) << what;
+}
+
+// The fast path reads runs of lines out of line (mesh_io.cpp: no landing
+// pad, no JavaScript round trip per line in WebAssembly) and hands a line it
+// declines to the general path, then resumes. With the fast path off, every
+// line is read by the general path: both must give the same buffers, the
+// same halfedges and the same messages on every fixture, and on texts whose
+// general lines come first, last, every other one or all of them.
+TEST(IoSpeedPaths, TheFastAndTheGeneralPathAgreeOnEveryFixture) {
+  int valid = 0;
+  for (const char* name : fixture_names) {
+    const auto [text, format] = read_fixture(name);
+    ASSERT_FALSE(text.empty()) << name;
+    std::vector<std::uint32_t> h_fast, h_general;
+    const Result<Mesh_buffers> fast = read_mesh(text, format, &h_fast);
+    const Result<Mesh_buffers> general =
+        detail::read_mesh_general(text, format, &h_general);
+    expect_same_reading(fast, general, name);
+    EXPECT_EQ(h_fast, h_general) << name;
+    if (!fast.ok()) continue;
+    ++valid;
+    for (const std::size_t k : {1, 2, 3}) {
+      for (std::size_t first = 0; first < k; ++first) {
+        const std::string mixed =
+            with_general_lines(fast.value, format, k, first);
+        const std::string what = std::string(name) + " k=" + std::to_string(k) +
+                                 " first=" + std::to_string(first);
+        std::vector<std::uint32_t> h_mixed;
+        const Result<Mesh_buffers> m = read_mesh(mixed, format, &h_mixed);
+        ASSERT_TRUE(m.ok()) << what << ": " << m.status.message;
+        expect_same_reading(m, fast, what);
+        EXPECT_EQ(h_mixed, h_fast) << what;
+        expect_same_reading(detail::read_mesh_general(mixed, format), fast,
+                            what);
+      }
+    }
+  }
+  EXPECT_EQ(valid, 12);
+}
+
+// Where a run stops, the counts and lines in the messages continue from
+// where it stopped: a text ending after general and fast lines, an index
+// the fast path declines, extra data, an unknown statement after a run.
+TEST(IoSpeedPaths, MessagesAfterARunNameTheRightLine) {
+  struct Case {
+    const char* text;
+    Mesh_format format;
+    Status_code code;
+    int line;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"OFF\n4 1 0\n0 0 0\n1 0 0 nan\n0 1 0\n", Mesh_format::off,
+       Status_code::parse_error, 5, "line 5: file ends after 3 of 4 vertices"},
+      {"OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 +0 2 1\n\n",
+       Mesh_format::off, Status_code::parse_error, 8,
+       "line 8: file ends after 2 of 3 faces"},
+      {"OFF\n3 3 0\n0 0 0\n1 0 0 nan\n0 1 0\n3 0 1 2\n3 0 2 1\n3 0 1 3\n",
+       Mesh_format::off, Status_code::invalid_mesh, 8,
+       "line 8: face index 3 is out of range (3 vertices)"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# end\n3 0 2 1\n",
+       Mesh_format::off, Status_code::parse_error, 8,
+       "line 8: extra data after the 1 faces the header declares (header "
+       "counts disagree with the data)"},
+      {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\nx 0 2 1\n", Mesh_format::off,
+       Status_code::parse_error, 7,
+       "line 7: face 1 must start with its vertex count, found 'x' (do the "
+       "header counts match the data?)"},
+      {"v 0 0 0\nv 1 0 0 nan\nv 0 1 0\nf 1 2 3\nvt 0 0\nf +1 3 2\nq 1\n",
+       Mesh_format::obj, Status_code::parse_error, 7,
+       "line 7: unknown OBJ statement 'q'"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\n", Mesh_format::obj,
+       Status_code::invalid_mesh, 5,
+       "line 5: inconsistent orientation: the faces on lines 4 and 5 both "
+       "use edge 1\u21922 in the same direction"},
+  };
+  for (const Case& c : cases) {
+    for (const bool fast : {true, false}) {
+      const Result<Mesh_buffers> r =
+          fast ? read_mesh(c.text, c.format)
+               : detail::read_mesh_general(c.text, c.format);
+      EXPECT_EQ(r.status.code, c.code) << c.text;
+      EXPECT_EQ(r.status.line, c.line) << c.text;
+      EXPECT_EQ(r.status.message, c.message) << c.text;
+    }
+  }
 }
 
 }  // namespace

@@ -140,7 +140,11 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   const std::uint32_t corners = static_cast<std::uint32_t>(idx.size());
   std::vector<std::uint32_t> start(nv + 1, 0);
   for (std::uint32_t v : idx) ++start[v + 1];
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::uint32_t most = 0;  // the largest valence
+  for (std::size_t v = 0; v < nv; ++v) {
+    most = std::max(most, start[v + 1]);
+    start[v + 1] += start[v];
+  }
   // Not zeroed: every entry is written by the counting sort. Without
   // numbering an entry is 8 bytes, and the check alone (read_mesh) moves
   // half the memory.
@@ -174,10 +178,12 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
     std::uint32_t stamp, at;
   };
   constexpr std::uint32_t kFew = 16;
-  std::vector<Mark> mark;  // taken at the first vertex with many corners
-  // The chain at the vertex at hand, by position in its list.
-  std::vector<std::uint32_t> many_step;
-  std::vector<std::uint8_t> many_led_to;
+  std::vector<Mark> mark(most > kFew ? nv : 0, Mark{none, 0});
+  // The chain at the vertex at hand, by position in its list. Sized once:
+  // a call that may throw, such as a resize, costs a JavaScript round trip
+  // per vertex in WebAssembly (Emscripten's exceptions).
+  std::vector<std::uint32_t> many_step(most > kFew ? most : 0);
+  std::vector<std::uint8_t> many_led_to(most > kFew ? most : 0);
   std::uint32_t few_step[kFew];
   std::uint8_t few_led_to[kFew];
   // Pairs the n corners leaving a vertex (`list`) with the corners before
@@ -224,14 +230,11 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
       });
     } else {
       const auto stamp = static_cast<std::uint32_t>(v);
-      if (mark.empty()) mark.assign(nv, Mark{none, 0});
       for (std::uint32_t i = 0; i < n; ++i) {
         Mark& m = mark[list[i].to];
         if (m.stamp == stamp) return false;
         m = Mark{stamp, i};
       }
-      many_step.resize(n);
-      many_led_to.resize(n);
       fan = pair_and_walk(list, n, many_step.data(), many_led_to.data(),
                           [&](std::uint32_t u) {
                             const Mark m = mark[u];

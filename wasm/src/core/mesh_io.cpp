@@ -237,7 +237,10 @@ const char* fast_number(const Line_reader& in, const char* p, double& out) {
 }
 
 /// Unsigned digits at `p` (at most 10, no sign); where they end or nullptr.
-const char* scan_digits(const char* p, const char* end, std::uint64_t& out) {
+/// Inlined by force: em++ left it a call per index (6% of OFF's parse).
+[[gnu::always_inline]] inline const char* scan_digits(const char* p,
+                                                      const char* end,
+                                                      std::uint64_t& out) {
   const char* const start = p;
   std::uint64_t v = 0;
   while (p != end && static_cast<unsigned char>(*p - '0') < 10) {
@@ -346,6 +349,94 @@ long long fast_obj_face(Line_reader& in, const char* p,
   return corners;
 }
 
+// Runs: the fast path over many lines in one call. Each run is out of line
+// and holds nothing with a destructor, so it needs no landing pad. That
+// matters in WebAssembly: with Emscripten's JavaScript exceptions, every
+// call made where a landing pad is live (read_mesh's try block, a function
+// with a string or vector local) goes through a JavaScript invoke_* wrapper,
+// and with the fast path inlined into read_mesh those round trips cost OFF
+// about half its parse time. Inside a run the calls are plain; an exception
+// (bad_alloc from a growing vector) passes through to read_mesh's handler.
+
+/// Where a run stopped.
+enum class Run_stop {
+  count,      ///< every line asked for was read
+  slow_line,  ///< at a data line the fast path declines: found, not read
+  text_end,   ///< the text ended first
+};
+
+/// Up to `count` OFF vertex lines by the fast path (x y z and at least
+/// `min_extra` more numbers); returns how many it read. Without `fast` it
+/// declines every line (the general path alone, for the tests).
+[[gnu::noinline]] std::size_t fast_off_vertex_run(
+    Line_reader& in, bool fast, std::size_t count, std::size_t min_extra,
+    std::vector<double>& positions, int& line, Run_stop& stop) {
+  for (std::size_t v = 0; v < count; ++v) {
+    if (!in.data_line(line)) {
+      stop = Run_stop::text_end;
+      return v;
+    }
+    if (!fast || !fast_vertex(in, in.cursor(), min_extra, positions)) {
+      stop = Run_stop::slow_line;
+      return v;
+    }
+  }
+  stop = Run_stop::count;
+  return count;
+}
+
+/// Up to `count` OFF face lines by the fast path (indices below `nv`), each
+/// face's line appended to `face_lines`; returns how many it read.
+/// Without `fast` it declines every line.
+[[gnu::noinline]] std::size_t fast_off_face_run(Line_reader& in, bool fast,
+                                                std::size_t count,
+                                                std::size_t nv,
+                                                Mesh_buffers& mesh,
+                                                std::vector<int>& face_lines,
+                                                int& line, Run_stop& stop) {
+  for (std::size_t f = 0; f < count; ++f) {
+    if (!in.data_line(line)) {
+      stop = Run_stop::text_end;
+      return f;
+    }
+    const long long k = fast ? fast_off_face(in, nv, mesh.face_indices) : -1;
+    if (k < 0) {
+      stop = Run_stop::slow_line;
+      return f;
+    }
+    mesh.face_sizes.push_back(static_cast<std::uint32_t>(k));
+    face_lines.push_back(line);
+  }
+  stop = Run_stop::count;
+  return count;
+}
+
+/// OBJ "v" and "f" lines by the fast path until a data line it declines
+/// (slow_line) or the end of the text (text_end). Without `fast` it
+/// declines every line.
+[[gnu::noinline]] Run_stop fast_obj_run(Line_reader& in, bool fast,
+                                        Mesh_buffers& mesh,
+                                        std::vector<int>& face_lines,
+                                        int& line) {
+  while (in.data_line(line)) {
+    const char* c = in.cursor();
+    if (!fast || c + 1 == in.text_end() || !Line_reader::is_blank(c[1]))
+      return Run_stop::slow_line;
+    if (*c == 'v') {
+      if (!fast_vertex(in, c + 1, 0, mesh.positions))
+        return Run_stop::slow_line;
+    } else if (*c == 'f') {
+      const long long corners = fast_obj_face(in, c + 1, mesh.face_indices);
+      if (corners < 0) return Run_stop::slow_line;
+      mesh.face_sizes.push_back(static_cast<std::uint32_t>(corners));
+      face_lines.push_back(line);
+    } else {
+      return Run_stop::slow_line;
+    }
+  }
+  return Run_stop::text_end;
+}
+
 std::string at(int line) { return "line " + std::to_string(line) + ": "; }
 /// A token of the file as messages quote it: at most 40 bytes, cut before a
 /// UTF-8 sequence rather than inside it, and control bytes (NUL, ESC ...)
@@ -422,7 +513,8 @@ Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
 // ---------------------------------------------------------------- OFF
 
 Result<Mesh_buffers> read_off(std::string_view text,
-                              std::vector<std::uint32_t>* corner_halfedges) {
+                              std::vector<std::uint32_t>* corner_halfedges,
+                              bool fast) {
   Line_reader in(text);
   std::vector<std::string_view> tok;
   int line = 0;
@@ -503,12 +595,15 @@ Result<Mesh_buffers> read_off(std::string_view text,
   const std::size_t min_values =
       3 + (normals ? 3 : 0) + (colours ? 3 : 0) + (texture ? 2 : 0);
   for (std::size_t v = 0; v < nv; ++v) {
-    if (!in.data_line(line)) {
+    Run_stop stop = Run_stop::count;
+    v += fast_off_vertex_run(in, fast, nv - v, min_values - 3, mesh.positions,
+                             line, stop);
+    if (stop == Run_stop::count) break;
+    if (stop == Run_stop::text_end) {
       return parse_fail(in.last_line(), "file ends after " + std::to_string(v) +
                                             " of " + std::to_string(nv) +
                                             " vertices");
     }
-    if (fast_vertex(in, in.cursor(), min_values - 3, mesh.positions)) continue;
     in.take_line(tok);
     if (tok.size() < min_values) {
       std::string need = "x y z";
@@ -544,16 +639,13 @@ Result<Mesh_buffers> read_off(std::string_view text,
   }
 
   for (std::size_t f = 0; f < nf; ++f) {
-    if (!in.data_line(line)) {
+    Run_stop stop = Run_stop::count;
+    f += fast_off_face_run(in, fast, nf - f, nv, mesh, face_lines, line, stop);
+    if (stop == Run_stop::count) break;
+    if (stop == Run_stop::text_end) {
       return parse_fail(in.last_line(), "file ends after " + std::to_string(f) +
                                             " of " + std::to_string(nf) +
                                             " faces");
-    }
-    const long long fast_k = fast_off_face(in, nv, mesh.face_indices);
-    if (fast_k >= 0) {
-      mesh.face_sizes.push_back(static_cast<std::uint32_t>(fast_k));
-      face_lines.push_back(line);
-      continue;
     }
     in.take_line(tok);
     long long k = 0;
@@ -648,25 +740,15 @@ bool parse_obj_corner(std::string_view t, long long& v) {
 }
 
 Result<Mesh_buffers> read_obj(std::string_view text,
-                              std::vector<std::uint32_t>* corner_halfedges) {
+                              std::vector<std::uint32_t>* corner_halfedges,
+                              bool fast) {
   Line_reader in(text);
   std::vector<std::string_view> tok;
   int line = 0;
   Mesh_buffers mesh;
   std::vector<int> face_lines;
-  while (in.data_line(line)) {
-    const char* c = in.cursor();
-    if (c + 1 != in.text_end() && Line_reader::is_blank(c[1])) {
-      if (*c == 'v' && fast_vertex(in, c + 1, 0, mesh.positions)) continue;
-      if (*c == 'f') {
-        const long long corners = fast_obj_face(in, c + 1, mesh.face_indices);
-        if (corners >= 0) {
-          mesh.face_sizes.push_back(static_cast<std::uint32_t>(corners));
-          face_lines.push_back(line);
-          continue;
-        }
-      }
-    }
+  while (fast_obj_run(in, fast, mesh, face_lines, line) ==
+         Run_stop::slow_line) {
     in.take_line(tok);
     const std::string_view k = tok[0];
     if (k == "v") {
@@ -935,13 +1017,13 @@ class Chunk_writer {
   bool ok_ = true;
 };
 
-}  // namespace
-
-Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format,
-                               std::vector<std::uint32_t>* corner_halfedges) {
+/// read_mesh, with or without the fast path.
+Result<Mesh_buffers> read_text(std::string_view text, Mesh_format format,
+                               std::vector<std::uint32_t>* corner_halfedges,
+                               bool fast) {
   try {
-    return format == Mesh_format::off ? read_off(text, corner_halfedges)
-                                      : read_obj(text, corner_halfedges);
+    return format == Mesh_format::off ? read_off(text, corner_halfedges, fast)
+                                      : read_obj(text, corner_halfedges, fast);
   } catch (const std::bad_alloc&) {
     Result<Mesh_buffers> r;
     r.status = Status::error(Status_code::too_large,
@@ -955,6 +1037,21 @@ Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format,
     return r;
   }
 }
+
+}  // namespace
+
+Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format,
+                               std::vector<std::uint32_t>* corner_halfedges) {
+  return read_text(text, format, corner_halfedges, true);
+}
+
+namespace detail {
+Result<Mesh_buffers> read_mesh_general(
+    std::string_view text, Mesh_format format,
+    std::vector<std::uint32_t>* corner_halfedges) {
+  return read_text(text, format, corner_halfedges, false);
+}
+}  // namespace detail
 
 Status check_writable(const Mesh_buffers& mesh) {
   if (mesh.positions.size() % 3 != 0)

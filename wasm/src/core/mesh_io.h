@@ -27,6 +27,15 @@ Result<Mesh_buffers> read_mesh(
     std::string_view text, Mesh_format format,
     std::vector<std::uint32_t>* corner_halfedges = nullptr);
 
+namespace detail {
+/// read_mesh with the fast path off: every data line split into tokens and
+/// read by the general path, the reference the fast path must agree with
+/// (same buffers, same messages and lines). For the tests.
+Result<Mesh_buffers> read_mesh_general(
+    std::string_view text, Mesh_format format,
+    std::vector<std::uint32_t>* corner_halfedges = nullptr);
+}  // namespace detail
+
 /// Whether write_mesh can write `mesh` so that read_mesh takes it back:
 /// positions in threes and finite, face sizes that add up to the indices,
 /// every index naming a vertex. O(n) without
