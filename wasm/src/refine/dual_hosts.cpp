@@ -53,6 +53,12 @@ namespace subdivlab {
 namespace refine {
 namespace {
 
+/// Frees v's block (`v = {}` would keep it: that assigns an empty list).
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
 /// next/prev of every non-border halfedge, from the faces.
 void link_faces(const Level& p, Dual_scratch& s) {
   const std::size_t H = 2 * std::size_t{p.edge_count};
@@ -91,23 +97,6 @@ void link_halfedges(Level& c) {
   c.border_edge_count = c.edge_count * 2 - c.corner_count();
 }
 
-/// Surface_mesh::collect_garbage's moves: slots at or past `kept` (the
-/// count after) that hold an element go, from the back, to the free slots
-/// below `kept`, from the front. moved[p - kept] is slot p's new index.
-void collect(std::uint8_t* removed, std::size_t slots, std::size_t kept,
-             std::vector<std::uint32_t>& moved) {
-  size_to(moved, slots - kept);
-  std::size_t i0 = 0, i1 = slots - 1;
-  while (true) {
-    while (removed[i0] == 0 && i0 < i1) ++i0;
-    while (removed[i1] != 0 && i0 < i1) --i1;
-    if (i0 >= i1) break;
-    moved[i1 - kept] = static_cast<std::uint32_t>(i0);
-    removed[i0] = 0;
-    removed[i1] = 1;
-  }
-}
-
 void set_offsets(Level& c, std::uint32_t faces) {
   c.face_count = faces;
   c.uniform_degree = 0;
@@ -123,26 +112,24 @@ void sum_offsets(Level& c) {
 
 void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
-  const std::uint32_t H = 2 * E;
+  const std::uint32_t H = 2 * E, E2 = 4 * E, F2 = F + E + V;
   link_faces(p, s);
   const std::uint32_t* next = s.next.data();
   const std::uint32_t* prev = s.prev.data();
   const std::uint32_t* vh = p.vertex_halfedge.data();
   size_to(s.corner_vertex, H);
   size_to(s.edge_of, H);
+  size_to(s.spoke, H);
+  size_to(s.rank, V);
   std::uint32_t* cv = s.corner_vertex.data();
   std::uint32_t* cut = s.edge_of.data();
-  const std::size_t edge_slots = 6 * std::size_t{E} + 1,
-                    face_slots = F + 3 * std::size_t{E} + 1;
-  size_to(s.removed, edge_slots + face_slots);
-  std::fill(s.removed.begin(), s.removed.end(), 0);
-  std::uint8_t* removed_edge = s.removed.data();
-  std::uint8_t* removed_face = removed_edge + edge_slots;
-  removed_edge[E - 1] = 1;
-  removed_face[F + H] = 1;
-  // Corners, vertex by vertex.
-  size_to(s.rank, V);
+  std::uint32_t* spoke = s.spoke.data();
   std::uint32_t* valence = s.rank.data();
+  // Corners, vertex by vertex: each one's vertex and the final index of its
+  // cut edge. A cut slot at or past 4E moves to the k-th free slot from the
+  // front (k = 3E - o_v - (j + 1) mod n_v, counting the slots from the
+  // back); free slot 0 is edge E - 1, free slot r > 0 the spoke of corner
+  // r - 1, whose final index spoke[] holds (corner r - 1 <= o_v + n_v - 1).
   std::uint32_t o = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
     const std::uint32_t first = vh[v];
@@ -152,101 +139,124 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
       x = next[x] ^ 1;
     } while (x != first);
     valence[v] = n;
+    for (std::uint32_t j = 0; j < n; ++j) spoke[o + j] = E + 2 * o + j;
     for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
-      const std::uint32_t slot = V + o + j;
-      cv[x] = slot < H ? slot : V + H - 1 - slot;
-      cut[x] = E + 2 * o + n + (j + 1 == n ? 0 : j + 1);
-      removed_edge[E + 2 * o + j] = 1;
-      if (j > 0) removed_face[F + o + j] = 1;
+      const std::uint32_t corner = o + j, after = j + 1 == n ? 0 : j + 1;
+      cv[x] = corner < H - V ? V + corner : H - 1 - corner;
+      const std::uint32_t slot = E + 2 * o + n + after;
+      cut[x] = slot < E2 ? slot : spoke[3 * E - 1 - o - after];
     }
     o += n;
   }
-  const std::uint32_t E2 = 4 * E, F2 = F + E + V;
-  std::vector<std::uint32_t> moved_faces;
-  collect(removed_face, face_slots, F2, moved_faces);
-  collect(removed_edge, edge_slots, E2, s.moved);
-  const std::uint32_t* moved = s.moved.data();
-  auto edge = [&](std::uint32_t slot) {
-    return slot < E2 ? slot : moved[slot - E2];
-  };
-  auto face = [&](std::uint32_t slot) {
-    return slot < F2 ? slot : moved_faces[slot - F2];
-  };
-  // The F-face halfedge into corner(x).
+  // The F-face halfedge along x (the F-face edges' slots past 4E move too).
   auto along = [&](std::uint32_t x) {
     const std::uint32_t e = x >> 1;
-    return 2 * edge((x & 1) != 0 ? 5 * E + 1 + e : e == 0 ? 5 * E : e - 1);
+    if ((x & 1) == 0) return 2 * (e == 0 ? spoke[E - 1] : e - 1);
+    return 2 * (e + 1 == E ? E - 1 : spoke[E - 2 - e]);
   };
 
   c.vertex_count = H;
   c.edge_count = E2;
   set_offsets(c, F2);
-  std::uint32_t* offsets = c.face_offsets.data();
-  for (std::uint32_t f = 0; f < F; ++f)
-    offsets[f + 1] = p.face_end(f) - p.face_begin(f);
-  for (std::uint32_t e = 0; e < E; ++e) offsets[face(F + H + 1 + e) + 1] = 4;
-  o = 0;
-  for (std::uint32_t v = 0; v < V; ++v) {
-    offsets[face(F + o) + 1] = valence[v];
-    o += valence[v];
-  }
-  sum_offsets(c);
   size_to(c.face_vertices, 4 * std::size_t{H});
+  std::uint32_t* offsets = c.face_offsets.data();
   std::uint32_t* fv = c.face_vertices.data();
   std::uint32_t* fh = nullptr;
+  std::uint32_t* target = nullptr;
+  std::uint32_t* corner_of = nullptr;
+  std::uint32_t* vhc = nullptr;
   if (last) {
-    c.face_halfedges = {};
-    c.vertex_halfedge = {};
+    release(c.face_halfedges);
+    release(c.vertex_halfedge);
+    release(c.halfedge_target);
+    release(c.halfedge_corner);
   } else {
     size_to(c.face_halfedges, 4 * std::size_t{H});
     size_to(c.vertex_halfedge, H);
+    size_to(c.halfedge_target, 2 * std::size_t{E2});
+    size_to(c.halfedge_corner, 2 * std::size_t{E2});
     fh = c.face_halfedges.data();
+    target = c.halfedge_target.data();
+    corner_of = c.halfedge_corner.data();
+    vhc = c.vertex_halfedge.data();
   }
+  // Every halfedge of a closed child lies in a face: its target and corner
+  // come with the face.
+  auto close_face = [&](std::uint32_t begin, std::uint32_t end) {
+    if (fh == nullptr) return;
+    for (std::uint32_t i = begin, before = end - 1; i < end; before = i++) {
+      const std::uint32_t h = fh[i];
+      target[h] = fv[i];
+      target[h ^ 1] = fv[before];
+      corner_of[h] = i;
+    }
+  };
+  std::uint32_t f2 = 0, out = 0;
+  // F-faces: each keeps its parent's index and starts at the corner of its
+  // halfedge of highest edge index.
   for (std::uint32_t f = 0; f < F; ++f) {
     const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
     const std::uint32_t* ph = p.face_halfedges.data() + begin;
-    const std::uint32_t start = first_corner_offset(ph, k), out = offsets[f];
+    const std::uint32_t start = first_corner_offset(ph, k);
     for (std::uint32_t i = 0; i < k; ++i) {
       const std::uint32_t x = ph[start + i < k ? start + i : start + i - k];
       fv[out + i] = cv[x];
       if (fh != nullptr) fh[out + i] = along(x);
     }
+    close_face(out, out + k);
+    out += k;
+    offsets[++f2] = out;
   }
-  for (std::uint32_t e = 0; e < E; ++e) {
-    const std::uint32_t h0 = 2 * e, h1 = h0 + 1,
-                        out = offsets[face(F + H + 1 + e)];
-    const std::uint32_t p0 = prev[h0], p1 = prev[h1];
-    fv[out] = cv[h0];
-    fv[out + 1] = cv[p0];
-    fv[out + 2] = cv[h1];
-    fv[out + 3] = cv[p1];
-    if (fh == nullptr) continue;
-    fh[out] = 2 * edge(cut[p1]);
-    fh[out + 1] = along(h0) ^ 1;
-    fh[out + 2] = 2 * edge(cut[p0]);
-    fh[out + 3] = along(h1) ^ 1;
-  }
-  o = 0;
-  for (std::uint32_t v = 0; v < V; ++v) {
-    const std::uint32_t n = valence[v];
-    std::uint32_t x = vh[v];
-    const std::uint32_t out = offsets[face(F + o)];
+  // The V-face of u: its corners in reverse circulation, each entered by its
+  // cut edge's odd halfedge.
+  auto v_face = [&](std::uint32_t u) {
+    const std::uint32_t n = valence[u];
+    std::uint32_t x = vh[u];
     for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
       fv[out + n - 1 - j] = cv[x];
       if (fh == nullptr) continue;
-      const std::uint32_t h = 2 * edge(cut[x]) + 1;
+      const std::uint32_t h = 2 * cut[x] + 1;
       fh[out + n - 1 - j] = h;
-      c.vertex_halfedge[cv[x]] = h;
+      vhc[cv[x]] = h;
+    }
+    close_face(out, out + n);
+    out += n;
+    offsets[++f2] = out;
+  };
+  // Then, in slot order after collect_garbage: vertex v's V-face at slot
+  // F + o_v, then its cut triangles' slots (freed), which take from the
+  // back the E-faces (e = E - 1 down to 0), then the V-faces of the last
+  // vertices (from V - 1 down).
+  o = 0;
+  std::uint32_t r = 0, late = V;
+  for (std::uint32_t v = 0; v < V && f2 < F2; ++v) {
+    v_face(v);
+    const std::uint32_t n = valence[v];
+    for (std::uint32_t j = 1; j < n && f2 < F2; ++j, ++r) {
+      if (r >= E) {
+        v_face(--late);
+        continue;
+      }
+      const std::uint32_t e = E - 1 - r, h0 = 2 * e, h1 = h0 + 1;
+      const std::uint32_t p0 = prev[h0], p1 = prev[h1];
+      fv[out] = cv[h0];
+      fv[out + 1] = cv[p0];
+      fv[out + 2] = cv[h1];
+      fv[out + 3] = cv[p1];
+      if (fh != nullptr) {
+        fh[out] = 2 * cut[p1];
+        fh[out + 1] = along(h0) ^ 1;
+        fh[out + 2] = 2 * cut[p0];
+        fh[out + 3] = along(h1) ^ 1;
+      }
+      close_face(out, out + 4);
+      out += 4;
+      offsets[++f2] = out;
     }
     o += n;
   }
-  if (last) {
-    c.halfedge_target = {};
-    c.halfedge_corner = {};
-    c.border_edge_count = 0;
-  } else {
-    link_halfedges(c);
-  }
+  offsets[0] = 0;
+  c.border_edge_count = 0;
 }
 
 void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
@@ -333,7 +343,7 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
   std::uint32_t* fv = c.face_vertices.data();
   std::uint32_t* fh = nullptr;
   if (last) {
-    c.face_halfedges = {};
+    release(c.face_halfedges);
   } else {
     size_to(c.face_halfedges, corners);
     fh = c.face_halfedges.data();
@@ -401,9 +411,9 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
     fan += on_border;
   }
   if (last) {
-    c.halfedge_target = {};
-    c.halfedge_corner = {};
-    c.vertex_halfedge = {};
+    release(c.halfedge_target);
+    release(c.halfedge_corner);
+    release(c.vertex_halfedge);
     c.border_edge_count = 0;
   } else {
     link_halfedges(c);
@@ -413,18 +423,14 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
 
 }  // namespace
 
-double dual_scratch_bytes(double vertices, double edges, double faces,
+double dual_scratch_bytes(double vertices, double edges, double child_vertices,
                           bool border) {
   const double halfedges = 2 * edges;
-  // corner_vertex, next, prev, edge_of: 4 bytes a halfedge each.
-  double bytes = 4 * 4 * halfedges;
-  if (border)
-    bytes += 4 * edges;  // ranks
-  else
-    bytes += 4 * vertices +                               // valences
-             (6 * edges + 1) + (faces + 3 * edges + 1) +  // removed flags
-             4 * (2 * edges + 1) + 4 * (2 * edges - vertices + 1);  // moves
-  return bytes;
+  // corner_vertex, next, prev, edge_of: 4 bytes a halfedge each; open: the
+  // edges' ranks; closed: the vertices' valences and the corners' spokes.
+  const double topology =
+      4 * 4 * halfedges + (border ? 4 * edges : 4 * vertices + 4 * halfedges);
+  return std::max(topology - 24 * child_vertices, 4 * halfedges);
 }
 
 void add_face_vertex_halfedges(Level& l) {
@@ -438,13 +444,33 @@ void add_face_vertex_halfedges(Level& l) {
     if (l.halfedge_corner[h] == kNone) vh[l.halfedge_target[h]] = h;
 }
 
+void release_unread_tables(Level& parent) {
+  release(parent.halfedge_target);
+  if (parent.border_edge_count == 0) release(parent.halfedge_corner);
+}
+
 void refine_dqq_topology(const Level& parent, Dual_scratch& scratch,
                          Level& child, bool last) {
-  child.edge_marks = {};
+  release(child.edge_marks);
+  // The child's positions come after the topology, in the place of its
+  // scratch (refine_dual_points).
+  release(child.positions);
+  if (last) {  // the last level has no halfedge tables: free the stale ones
+    release(child.face_halfedges);
+    release(child.halfedge_target);
+    release(child.halfedge_corner);
+    release(child.vertex_halfedge);
+  }
   if (parent.border_edge_count == 0)
     refine_closed(parent, scratch, child, last);
   else
     refine_open(parent, scratch, child, last);
+  // Only the corners' vertices stay for the points.
+  release(scratch.next);
+  release(scratch.prev);
+  release(scratch.edge_of);
+  release(scratch.rank);
+  release(scratch.spoke);
 }
 
 }  // namespace refine

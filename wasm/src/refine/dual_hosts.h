@@ -25,19 +25,24 @@ namespace refine {
 struct Dual_scratch {
   /// Per parent halfedge: the child vertex of its corner (kNone on the
   /// border). A border corner of an ear has a second vertex, this + 1.
+  /// The only table refine_dual_points reads: the others are freed when
+  /// the topology is done, before the child's positions are allocated.
   std::vector<std::uint32_t> corner_vertex;
   std::vector<std::uint32_t> next, prev;  ///< per non-border halfedge
-  /// Closed: each corner's cut edge before the garbage is collected.
-  /// Open: the F-face halfedge into each corner's vertex.
+  /// Closed: each corner's cut edge (its final index). Open: the F-face
+  /// halfedge into each corner's vertex.
   std::vector<std::uint32_t> edge_of;
   /// Open: rank of each interior edge; closed: valence of each vertex.
   std::vector<std::uint32_t> rank;
-  std::vector<std::uint32_t> moved;  ///< closed: slots collect_garbage moves
-  std::vector<std::uint8_t> removed;
+  /// Closed, per corner in vertex order: its spoke's edge slot, where
+  /// collect_garbage moves the slots past the kept edges.
+  std::vector<std::uint32_t> spoke;
 };
 
-/// Bytes of the scratch for a parent with these counts.
-double dual_scratch_bytes(double vertices, double edges, double faces,
+/// Bytes the scratch adds to a step's peak for a parent with these counts
+/// (`child_vertices` after it): the topology's tables, which the child's
+/// positions replace, or the corner vertices beside them.
+double dual_scratch_bytes(double vertices, double edges, double child_vertices,
                           bool border);
 
 /// level.vertex_halfedge as Surface_mesh::add_face leaves it after adding
@@ -45,6 +50,11 @@ double dual_scratch_bytes(double vertices, double edges, double faces,
 /// the border halfedge into v, inside the halfedge into v of the last face
 /// around v. Precondition: the halfedge tables.
 void add_face_vertex_halfedges(Level& level);
+
+/// Frees what a DQQ step does not read of its parent: the halfedge
+/// targets and, on a closed mesh, the halfedges' corners (the step reads
+/// them on open meshes, for the border).
+void release_unread_tables(Level& parent);
 
 /// The child level's topology (everything but positions): counts, face
 /// offsets and vertices; unless `last`, its halfedge tables and vertex
