@@ -59,18 +59,23 @@ void release(std::vector<T>& v) {
   std::vector<T>().swap(v);
 }
 
-/// next/prev of every non-border halfedge, from the faces.
-void link_faces(const Level& p, Dual_scratch& s) {
+/// next (and with `with_prev` prev) of every non-border halfedge, from the
+/// faces.
+void link_faces(const Level& p, Dual_scratch& s, bool with_prev) {
   const std::size_t H = 2 * std::size_t{p.edge_count};
   size_to(s.next, H);
-  size_to(s.prev, H);
+  if (with_prev) size_to(s.prev, H);
+  std::uint32_t* next = s.next.data();
+  std::uint32_t* prev = s.prev.data();
   const std::uint32_t* fh = p.face_halfedges.data();
   for (std::uint32_t f = 0; f < p.face_count; ++f) {
     const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
+    std::uint32_t x = fh[end - 1];
     for (std::uint32_t i = begin; i < end; ++i) {
-      const std::uint32_t x = fh[i], y = fh[i + 1 == end ? begin : i + 1];
-      s.next[x] = y;
-      s.prev[y] = x;
+      const std::uint32_t y = fh[i];
+      next[x] = y;
+      if (with_prev) prev[y] = x;
+      x = y;
     }
   }
 }
@@ -113,23 +118,28 @@ void sum_offsets(Level& c) {
 void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
   const std::uint32_t H = 2 * E, E2 = 4 * E, F2 = F + E + V;
-  link_faces(p, s);
+  link_faces(p, s, false);
   const std::uint32_t* next = s.next.data();
-  const std::uint32_t* prev = s.prev.data();
   const std::uint32_t* vh = p.vertex_halfedge.data();
   size_to(s.corner_vertex, H);
-  size_to(s.edge_of, H);
+  size_to(s.prev_vertex, H);
+  size_to(s.prev_cut, H);
   size_to(s.spoke, H);
+  size_to(s.cut, H);
   size_to(s.rank, V);
   std::uint32_t* cv = s.corner_vertex.data();
-  std::uint32_t* cut = s.edge_of.data();
+  std::uint32_t* prev_vertex = s.prev_vertex.data();
+  std::uint32_t* prev_cut = s.prev_cut.data();
   std::uint32_t* spoke = s.spoke.data();
+  std::uint32_t* cut = s.cut.data();
   std::uint32_t* valence = s.rank.data();
   // Corners, vertex by vertex: each one's vertex and the final index of its
   // cut edge. A cut slot at or past 4E moves to the k-th free slot from the
   // front (k = 3E - o_v - (j + 1) mod n_v, counting the slots from the
   // back); free slot 0 is edge E - 1, free slot r > 0 the spoke of corner
   // r - 1, whose final index spoke[] holds (corner r - 1 <= o_v + n_v - 1).
+  // The E-faces read both at prev(y) for y = next(x): stored at y, so that
+  // they read them in edge order.
   std::uint32_t o = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
     const std::uint32_t first = vh[v];
@@ -140,11 +150,18 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
     } while (x != first);
     valence[v] = n;
     for (std::uint32_t j = 0; j < n; ++j) spoke[o + j] = E + 2 * o + j;
-    for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
+    for (std::uint32_t j = 0; j < n; ++j) {
       const std::uint32_t corner = o + j, after = j + 1 == n ? 0 : j + 1;
-      cv[x] = corner < H - V ? V + corner : H - 1 - corner;
+      const std::uint32_t vertex = corner < H - V ? V + corner : H - 1 - corner;
       const std::uint32_t slot = E + 2 * o + n + after;
-      cut[x] = slot < E2 ? slot : spoke[3 * E - 1 - o - after];
+      const std::uint32_t edge =
+          slot < E2 ? slot : spoke[3 * E - 1 - o - after];
+      const std::uint32_t y = next[x];
+      cv[x] = vertex;
+      cut[corner] = edge;
+      prev_vertex[y] = vertex;
+      prev_cut[y] = edge;
+      x = y ^ 1;
     }
     o += n;
   }
@@ -207,17 +224,18 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
     out += k;
     offsets[++f2] = out;
   }
-  // The V-face of u: its corners in reverse circulation, each entered by its
-  // cut edge's odd halfedge.
-  auto v_face = [&](std::uint32_t u) {
+  // The V-face of u (its corners o_u.. in reverse circulation, each
+  // entered by its cut edge's odd halfedge).
+  auto v_face = [&](std::uint32_t u, std::uint32_t ou) {
     const std::uint32_t n = valence[u];
-    std::uint32_t x = vh[u];
-    for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
-      fv[out + n - 1 - j] = cv[x];
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const std::uint32_t corner = ou + j;
+      const std::uint32_t vertex = corner < H - V ? V + corner : H - 1 - corner;
+      fv[out + n - 1 - j] = vertex;
       if (fh == nullptr) continue;
-      const std::uint32_t h = 2 * cut[x] + 1;
+      const std::uint32_t h = 2 * cut[corner] + 1;
       fh[out + n - 1 - j] = h;
-      vhc[cv[x]] = h;
+      vhc[vertex] = h;
     }
     close_face(out, out + n);
     out += n;
@@ -228,25 +246,26 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   // back the E-faces (e = E - 1 down to 0), then the V-faces of the last
   // vertices (from V - 1 down).
   o = 0;
-  std::uint32_t r = 0, late = V;
+  std::uint32_t r = 0, late = V, late_o = H;
   for (std::uint32_t v = 0; v < V && f2 < F2; ++v) {
-    v_face(v);
+    v_face(v, o);
     const std::uint32_t n = valence[v];
     for (std::uint32_t j = 1; j < n && f2 < F2; ++j, ++r) {
       if (r >= E) {
-        v_face(--late);
+        --late;
+        late_o -= valence[late];
+        v_face(late, late_o);
         continue;
       }
       const std::uint32_t e = E - 1 - r, h0 = 2 * e, h1 = h0 + 1;
-      const std::uint32_t p0 = prev[h0], p1 = prev[h1];
       fv[out] = cv[h0];
-      fv[out + 1] = cv[p0];
+      fv[out + 1] = prev_vertex[h0];
       fv[out + 2] = cv[h1];
-      fv[out + 3] = cv[p1];
+      fv[out + 3] = prev_vertex[h1];
       if (fh != nullptr) {
-        fh[out] = 2 * cut[p1];
+        fh[out] = 2 * prev_cut[h1];
         fh[out + 1] = along(h0) ^ 1;
-        fh[out + 2] = 2 * cut[p0];
+        fh[out + 2] = 2 * prev_cut[h0];
         fh[out + 3] = along(h1) ^ 1;
       }
       close_face(out, out + 4);
@@ -262,7 +281,7 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
 void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
   const std::uint32_t H = 2 * E;
-  link_faces(p, s);
+  link_faces(p, s, true);
   const std::uint32_t* next = s.next.data();
   const std::uint32_t* prev = s.prev.data();
   const std::uint32_t* vh = p.vertex_halfedge.data();
@@ -426,11 +445,13 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
 double dual_scratch_bytes(double vertices, double edges, double child_vertices,
                           bool border) {
   const double halfedges = 2 * edges;
-  // corner_vertex, next, prev, edge_of: 4 bytes a halfedge each; open: the
-  // edges' ranks; closed: the vertices' valences and the corners' spokes.
+  // Open: corner_vertex, next, prev, edge_of (4 bytes a halfedge each) and
+  // the edges' ranks; the points keep corner_vertex. Closed: corner_vertex,
+  // next, prev_vertex, prev_cut, spoke, cut and the vertices' valences; the
+  // points keep nothing.
   const double topology =
-      4 * 4 * halfedges + (border ? 4 * edges : 4 * vertices + 4 * halfedges);
-  return std::max(topology - 24 * child_vertices, 4 * halfedges);
+      border ? 4 * 4 * halfedges + 4 * edges : 6 * 4 * halfedges + 4 * vertices;
+  return std::max(topology - 24 * child_vertices, border ? 4 * halfedges : 0.0);
 }
 
 void add_face_vertex_halfedges(Level& l) {
@@ -465,12 +486,17 @@ void refine_dqq_topology(const Level& parent, Dual_scratch& scratch,
     refine_closed(parent, scratch, child, last);
   else
     refine_open(parent, scratch, child, last);
-  // Only the corners' vertices stay for the points.
+  // Open, only the corners' vertices stay for the points.
   release(scratch.next);
   release(scratch.prev);
   release(scratch.edge_of);
   release(scratch.rank);
   release(scratch.spoke);
+  release(scratch.cut);
+  release(scratch.prev_vertex);
+  release(scratch.prev_cut);
+  // Closed, the points read the child's F-faces instead.
+  if (parent.border_edge_count == 0) release(scratch.corner_vertex);
 }
 
 }  // namespace refine

@@ -25,18 +25,23 @@ namespace refine {
 struct Dual_scratch {
   /// Per parent halfedge: the child vertex of its corner (kNone on the
   /// border). A border corner of an ear has a second vertex, this + 1.
-  /// The only table refine_dual_points reads: the others are freed when
-  /// the topology is done, before the child's positions are allocated.
+  /// Open, the only table refine_dual_points reads (closed, it reads the
+  /// child's F-faces): the others are freed when the topology is done,
+  /// before the child's positions are allocated.
   std::vector<std::uint32_t> corner_vertex;
-  std::vector<std::uint32_t> next, prev;  ///< per non-border halfedge
-  /// Closed: each corner's cut edge (its final index). Open: the F-face
-  /// halfedge into each corner's vertex.
+  std::vector<std::uint32_t> next;  ///< per non-border halfedge
+  std::vector<std::uint32_t> prev;  ///< open: per non-border halfedge
+  /// Open: the F-face halfedge into each corner's vertex.
   std::vector<std::uint32_t> edge_of;
   /// Open: rank of each interior edge; closed: valence of each vertex.
   std::vector<std::uint32_t> rank;
-  /// Closed, per corner in vertex order: its spoke's edge slot, where
-  /// collect_garbage moves the slots past the kept edges.
-  std::vector<std::uint32_t> spoke;
+  /// Closed, per halfedge h: the child vertex and cut edge of prev(h)'s
+  /// corner.
+  std::vector<std::uint32_t> prev_vertex, prev_cut;
+  /// Closed, per corner in vertex order: its spoke's edge slot (where
+  /// collect_garbage moves the slots past the kept edges) and its cut
+  /// edge's final index.
+  std::vector<std::uint32_t> spoke, cut;
 };
 
 /// Bytes the scratch adds to a step's peak for a parent with these counts
