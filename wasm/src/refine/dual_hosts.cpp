@@ -59,12 +59,11 @@ void release(std::vector<T>& v) {
   std::vector<T>().swap(v);
 }
 
-/// next (and with `with_prev` prev) of every non-border halfedge, from the
-/// faces.
-void link_faces(const Level& p, Dual_scratch& s, bool with_prev) {
+/// next and prev of every non-border halfedge, from the faces.
+void link_faces(const Level& p, Dual_scratch& s) {
   const std::size_t H = 2 * std::size_t{p.edge_count};
   size_to(s.next, H);
-  if (with_prev) size_to(s.prev, H);
+  size_to(s.prev, H);
   std::uint32_t* next = s.next.data();
   std::uint32_t* prev = s.prev.data();
   const std::uint32_t* fh = p.face_halfedges.data();
@@ -74,7 +73,7 @@ void link_faces(const Level& p, Dual_scratch& s, bool with_prev) {
     for (std::uint32_t i = begin; i < end; ++i) {
       const std::uint32_t y = fh[i];
       next[x] = y;
-      if (with_prev) prev[y] = x;
+      prev[y] = x;
       x = y;
     }
   }
@@ -118,60 +117,15 @@ void sum_offsets(Level& c) {
 void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
   const std::uint32_t H = 2 * E, E2 = 4 * E, F2 = F + E + V;
-  link_faces(p, s, false);
-  const std::uint32_t* next = s.next.data();
   const std::uint32_t* vh = p.vertex_halfedge.data();
-  size_to(s.corner_vertex, H);
-  size_to(s.prev_vertex, H);
-  size_to(s.prev_cut, H);
+  size_to(s.halfedges, H);
   size_to(s.spoke, H);
   size_to(s.cut, H);
   size_to(s.rank, V);
-  std::uint32_t* cv = s.corner_vertex.data();
-  std::uint32_t* prev_vertex = s.prev_vertex.data();
-  std::uint32_t* prev_cut = s.prev_cut.data();
+  Dual_scratch::Closed_halfedge* hs = s.halfedges.data();
   std::uint32_t* spoke = s.spoke.data();
   std::uint32_t* cut = s.cut.data();
   std::uint32_t* valence = s.rank.data();
-  // Corners, vertex by vertex: each one's vertex and the final index of its
-  // cut edge. A cut slot at or past 4E moves to the k-th free slot from the
-  // front (k = 3E - o_v - (j + 1) mod n_v, counting the slots from the
-  // back); free slot 0 is edge E - 1, free slot r > 0 the spoke of corner
-  // r - 1, whose final index spoke[] holds (corner r - 1 <= o_v + n_v - 1).
-  // The E-faces read both at prev(y) for y = next(x): stored at y, so that
-  // they read them in edge order.
-  std::uint32_t o = 0;
-  for (std::uint32_t v = 0; v < V; ++v) {
-    const std::uint32_t first = vh[v];
-    std::uint32_t n = 0, x = first;
-    do {
-      ++n;
-      x = next[x] ^ 1;
-    } while (x != first);
-    valence[v] = n;
-    for (std::uint32_t j = 0; j < n; ++j) spoke[o + j] = E + 2 * o + j;
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const std::uint32_t corner = o + j, after = j + 1 == n ? 0 : j + 1;
-      const std::uint32_t vertex = corner < H - V ? V + corner : H - 1 - corner;
-      const std::uint32_t slot = E + 2 * o + n + after;
-      const std::uint32_t edge =
-          slot < E2 ? slot : spoke[3 * E - 1 - o - after];
-      const std::uint32_t y = next[x];
-      cv[x] = vertex;
-      cut[corner] = edge;
-      prev_vertex[y] = vertex;
-      prev_cut[y] = edge;
-      x = y ^ 1;
-    }
-    o += n;
-  }
-  // The F-face halfedge along x (the F-face edges' slots past 4E move too).
-  auto along = [&](std::uint32_t x) {
-    const std::uint32_t e = x >> 1;
-    if ((x & 1) == 0) return 2 * (e == 0 ? spoke[E - 1] : e - 1);
-    return 2 * (e + 1 == E ? E - 1 : spoke[E - 2 - e]);
-  };
-
   c.vertex_count = H;
   c.edge_count = E2;
   set_offsets(c, F2);
@@ -197,6 +151,78 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
     corner_of = c.halfedge_corner.data();
     vhc = c.vertex_halfedge.data();
   }
+  // next(x), and where x's corner goes in its F-face (the F-faces come
+  // first, each from the corner of its halfedge of highest edge index), in
+  // `vertex` until the corners are numbered.
+  const std::uint32_t* pfh = p.face_halfedges.data();
+  for (std::uint32_t f = 0; f < F; ++f) {
+    const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
+    const std::uint32_t start =
+        begin + first_corner_offset(pfh + begin, end - begin);
+    std::uint32_t x = pfh[end - 1];
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t y = pfh[i];
+      hs[x].next = y;
+      hs[y].vertex = i >= start ? i - start + begin : i + end - start;
+      x = y;
+    }
+  }
+  // Corners, vertex by vertex: each one's vertex and the final index of its
+  // cut edge. A cut slot at or past 4E moves to the k-th free slot from the
+  // front (k = 3E - o_v - (j + 1) mod n_v, counting the slots from the
+  // back); free slot 0 is edge E - 1, free slot r > 0 the spoke of corner
+  // r - 1, whose final index spoke[] holds (corner r - 1 <= o_v + n_v - 1).
+  // The E-faces read both at prev(y) for y = next(x): stored at y, so that
+  // they read them in edge order. A circulation is a chain of dependent
+  // reads: a batch of vertices counts its valences in step, so that their
+  // reads overlap, then each circulates again in cache.
+  constexpr std::uint32_t kBatch = 16;
+  std::uint32_t at[kBatch];
+  std::uint32_t o = 0;
+  for (std::uint32_t v0 = 0; v0 < V; v0 += kBatch) {
+    const std::uint32_t m = std::min(kBatch, V - v0);
+    for (std::uint32_t b = 0; b < m; ++b) {
+      at[b] = hs[vh[v0 + b]].next ^ 1;
+      valence[v0 + b] = 1;
+    }
+    for (bool more = true; more;) {
+      more = false;
+      for (std::uint32_t b = 0; b < m; ++b) {
+        if (at[b] == vh[v0 + b]) continue;
+        at[b] = hs[at[b]].next ^ 1;
+        ++valence[v0 + b];
+        more = true;
+      }
+    }
+    for (std::uint32_t v = v0; v < v0 + m; ++v) {
+      const std::uint32_t n = valence[v];
+      std::uint32_t x = vh[v];
+      for (std::uint32_t j = 0; j < n; ++j) spoke[o + j] = E + 2 * o + j;
+      for (std::uint32_t j = 0; j < n; ++j) {
+        const std::uint32_t corner = o + j, after = j + 1 == n ? 0 : j + 1;
+        const std::uint32_t vertex =
+            corner < H - V ? V + corner : H - 1 - corner;
+        const std::uint32_t slot = E + 2 * o + n + after;
+        const std::uint32_t edge =
+            slot < E2 ? slot : spoke[3 * E - 1 - o - after];
+        const std::uint32_t y = hs[x].next;
+        fv[hs[x].vertex] = vertex;
+        hs[x].vertex = vertex;
+        cut[corner] = edge;
+        hs[y].prev_vertex = vertex;
+        hs[y].prev_cut = edge;
+        x = y ^ 1;
+      }
+      o += n;
+    }
+  }
+  // The F-face halfedge along x (the F-face edges' slots past 4E move too).
+  auto along = [&](std::uint32_t x) {
+    const std::uint32_t e = x >> 1;
+    if ((x & 1) == 0) return 2 * (e == 0 ? spoke[E - 1] : e - 1);
+    return 2 * (e + 1 == E ? E - 1 : spoke[E - 2 - e]);
+  };
+
   // Every halfedge of a closed child lies in a face: its target and corner
   // come with the face.
   auto close_face = [&](std::uint32_t begin, std::uint32_t end) {
@@ -209,18 +235,16 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
     }
   };
   std::uint32_t f2 = 0, out = 0;
-  // F-faces: each keeps its parent's index and starts at the corner of its
-  // halfedge of highest edge index.
+  // F-faces (their vertices are in place): each keeps its parent's index.
   for (std::uint32_t f = 0; f < F; ++f) {
-    const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
-    const std::uint32_t* ph = p.face_halfedges.data() + begin;
-    const std::uint32_t start = first_corner_offset(ph, k);
-    for (std::uint32_t i = 0; i < k; ++i) {
-      const std::uint32_t x = ph[start + i < k ? start + i : start + i - k];
-      fv[out + i] = cv[x];
-      if (fh != nullptr) fh[out + i] = along(x);
+    const std::uint32_t k = p.face_end(f) - out;
+    if (fh != nullptr) {
+      const std::uint32_t start = first_corner_offset(pfh + out, k);
+      for (std::uint32_t i = 0; i < k; ++i)
+        fh[out + i] =
+            along(pfh[out + (start + i < k ? start + i : start + i - k)]);
+      close_face(out, out + k);
     }
-    close_face(out, out + k);
     out += k;
     offsets[++f2] = out;
   }
@@ -258,14 +282,15 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
         continue;
       }
       const std::uint32_t e = E - 1 - r, h0 = 2 * e, h1 = h0 + 1;
-      fv[out] = cv[h0];
-      fv[out + 1] = prev_vertex[h0];
-      fv[out + 2] = cv[h1];
-      fv[out + 3] = prev_vertex[h1];
+      const Dual_scratch::Closed_halfedge &a = hs[h0], &b = hs[h1];
+      fv[out] = a.vertex;
+      fv[out + 1] = a.prev_vertex;
+      fv[out + 2] = b.vertex;
+      fv[out + 3] = b.prev_vertex;
       if (fh != nullptr) {
-        fh[out] = 2 * prev_cut[h1];
+        fh[out] = 2 * b.prev_cut;
         fh[out + 1] = along(h0) ^ 1;
-        fh[out + 2] = 2 * prev_cut[h0];
+        fh[out + 2] = 2 * a.prev_cut;
         fh[out + 3] = along(h1) ^ 1;
       }
       close_face(out, out + 4);
@@ -281,7 +306,7 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
 void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
   const std::uint32_t H = 2 * E;
-  link_faces(p, s, true);
+  link_faces(p, s);
   const std::uint32_t* next = s.next.data();
   const std::uint32_t* prev = s.prev.data();
   const std::uint32_t* vh = p.vertex_halfedge.data();
@@ -446,9 +471,9 @@ double dual_scratch_bytes(double vertices, double edges, double child_vertices,
                           bool border) {
   const double halfedges = 2 * edges;
   // Open: corner_vertex, next, prev, edge_of (4 bytes a halfedge each) and
-  // the edges' ranks; the points keep corner_vertex. Closed: corner_vertex,
-  // next, prev_vertex, prev_cut, spoke, cut and the vertices' valences; the
-  // points keep nothing.
+  // the edges' ranks; the points keep corner_vertex. Closed: halfedges (16
+  // bytes each), spoke, cut and the vertices' valences; the points keep
+  // nothing.
   const double topology =
       border ? 4 * 4 * halfedges + 4 * edges : 6 * 4 * halfedges + 4 * vertices;
   return std::max(topology - 24 * child_vertices, border ? 4 * halfedges : 0.0);
@@ -493,10 +518,7 @@ void refine_dqq_topology(const Level& parent, Dual_scratch& scratch,
   release(scratch.rank);
   release(scratch.spoke);
   release(scratch.cut);
-  release(scratch.prev_vertex);
-  release(scratch.prev_cut);
-  // Closed, the points read the child's F-faces instead.
-  if (parent.border_edge_count == 0) release(scratch.corner_vertex);
+  release(scratch.halfedges);
 }
 
 }  // namespace refine

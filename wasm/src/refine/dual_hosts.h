@@ -23,21 +23,23 @@ namespace refine {
 /// Per-parent tables a step fills; kept between steps so that their memory
 /// is reused.
 struct Dual_scratch {
-  /// Per parent halfedge: the child vertex of its corner (kNone on the
-  /// border). A border corner of an ear has a second vertex, this + 1.
-  /// Open, the only table refine_dual_points reads (closed, it reads the
-  /// child's F-faces): the others are freed when the topology is done,
-  /// before the child's positions are allocated.
+  /// Open, per parent halfedge: the child vertex of its corner (kNone on
+  /// the border; a border corner of an ear has a second vertex, this + 1),
+  /// the only table refine_dual_points reads. The others are freed when the
+  /// topology is done, before the child's positions are allocated.
   std::vector<std::uint32_t> corner_vertex;
-  std::vector<std::uint32_t> next;  ///< per non-border halfedge
-  std::vector<std::uint32_t> prev;  ///< open: per non-border halfedge
+  std::vector<std::uint32_t> next, prev;  ///< open: per non-border halfedge
   /// Open: the F-face halfedge into each corner's vertex.
   std::vector<std::uint32_t> edge_of;
   /// Open: rank of each interior edge; closed: valence of each vertex.
   std::vector<std::uint32_t> rank;
-  /// Closed, per halfedge h: the child vertex and cut edge of prev(h)'s
-  /// corner.
-  std::vector<std::uint32_t> prev_vertex, prev_cut;
+  /// Closed, per halfedge h: next(h), the child vertex of h's corner and
+  /// the child vertex and cut edge of prev(h)'s corner, side by side: a
+  /// circulation reads and writes them in the cache lines it visits.
+  struct Closed_halfedge {
+    std::uint32_t next, vertex, prev_vertex, prev_cut;
+  };
+  std::vector<Closed_halfedge> halfedges;
   /// Closed, per corner in vertex order: its spoke's edge slot (where
   /// collect_garbage moves the slots past the kept edges) and its cut
   /// edge's final index.

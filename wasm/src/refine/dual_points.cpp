@@ -34,40 +34,54 @@ class Weights {
 
 /// Closed: F-face f of the child lists the child vertices of parent face
 /// f's corners from its first corner (dual_hosts.cpp), so the points are
-/// written in the child's F-face order, from a copy of the face's points.
+/// written in the child's F-face order. The faces go in batches: first the
+/// batch's points are gathered (independent reads, which overlap), then
+/// its corners are computed from the copies.
 void closed_points(const Level& p, Weights& weights, Level& c) {
   const double* in = p.positions.data();
   double* out = c.positions.data();
   const std::uint32_t* fv = p.face_vertices.data();
   const std::uint32_t* fh = p.face_halfedges.data();
   const std::uint32_t* child = c.face_vertices.data();
-  std::vector<double> face;
-  for (std::uint32_t f = 0; f < p.face_count; ++f) {
-    const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
-    const double* w = weights.at(k);
-    const std::uint32_t start = first_corner_offset(fh + begin, k);
-    // The face's points from its first corner, twice, so that corner t's
-    // ring is face[3 t ...] without a wrap.
-    if (face.size() < 6 * std::size_t{k}) face.resize(6 * std::size_t{k});
-    double* q = face.data();
-    for (std::uint32_t t = 0, i = start; t < k;
-         ++t, i = i + 1 == k ? 0 : i + 1) {
-      const double* pt = in + 3 * std::size_t{fv[begin + i]};
-      for (int d = 0; d < 3; ++d) q[3 * t + d] = q[3 * (t + k) + d] = pt[d];
+  constexpr std::uint32_t kBatch = 512;  // corners
+  std::vector<double> copies;
+  for (std::uint32_t f0 = 0; f0 < p.face_count;) {
+    // The batch: faces f0..f1, at least one.
+    const std::uint32_t first = p.face_begin(f0);
+    std::uint32_t f1 = f0 + 1;
+    while (f1 < p.face_count && p.face_end(f1) - first <= kBatch) ++f1;
+    const std::uint32_t corners = p.face_begin(f1 - 1) +
+                                  (p.face_end(f1 - 1) - p.face_begin(f1 - 1)) -
+                                  first;
+    if (copies.size() < 3 * std::size_t{corners})
+      copies.resize(3 * std::size_t{corners});
+    double* q = copies.data();
+    for (std::uint32_t i = 0; i < corners; ++i) {
+      const double* pt = in + 3 * std::size_t{fv[first + i]};
+      q[3 * i] = pt[0];
+      q[3 * i + 1] = pt[1];
+      q[3 * i + 2] = pt[2];
     }
-    for (std::uint32_t t = 0; t < k; ++t) {
-      double x = 0, y = 0, z = 0;
-      const double* ring = q + 3 * t;
-      for (std::uint32_t j = 0; j < k; ++j) {
-        x += w[j] * ring[3 * j];
-        y += w[j] * ring[3 * j + 1];
-        z += w[j] * ring[3 * j + 2];
+    for (std::uint32_t f = f0; f < f1; ++f) {
+      const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
+      const double* w = weights.at(k);
+      const std::uint32_t start = first_corner_offset(fh + begin, k);
+      const double* face = q + 3 * std::size_t{begin - first};
+      for (std::uint32_t t = 0; t < k; ++t) {
+        double x = 0, y = 0, z = 0;
+        for (std::uint32_t j = 0, i = start + t < k ? start + t : start + t - k;
+             j < k; ++j, i = i + 1 == k ? 0 : i + 1) {
+          x += w[j] * face[3 * i];
+          y += w[j] * face[3 * i + 1];
+          z += w[j] * face[3 * i + 2];
+        }
+        double* o = out + 3 * std::size_t{child[begin + t]};
+        o[0] = x;
+        o[1] = y;
+        o[2] = z;
       }
-      double* o = out + 3 * std::size_t{child[begin + t]};
-      o[0] = x;
-      o[1] = y;
-      o[2] = z;
     }
+    f0 = f1;
   }
 }
 
