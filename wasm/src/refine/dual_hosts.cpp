@@ -62,8 +62,8 @@ void release(std::vector<T>& v) {
 /// next and prev of every non-border halfedge, from the faces.
 void link_faces(const Level& p, Dual_scratch& s) {
   const std::size_t H = 2 * std::size_t{p.edge_count};
-  size_to(s.next, H);
-  size_to(s.prev, H);
+  s.next.size_to(H);
+  s.prev.size_to(H);
   std::uint32_t* next = s.next.data();
   std::uint32_t* prev = s.prev.data();
   const std::uint32_t* fh = p.face_halfedges.data();
@@ -118,10 +118,10 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
   const std::uint32_t H = 2 * E, E2 = 4 * E, F2 = F + E + V;
   const std::uint32_t* vh = p.vertex_halfedge.data();
-  size_to(s.halfedges, H);
-  size_to(s.spoke, H);
-  size_to(s.cut, H);
-  size_to(s.rank, V);
+  s.halfedges.size_to(H);
+  s.spoke.size_to(H);
+  s.cut.size_to(H);
+  s.rank.size_to(V);
   Dual_scratch::Closed_halfedge* hs = s.halfedges.data();
   std::uint32_t* spoke = s.spoke.data();
   std::uint32_t* cut = s.cut.data();
@@ -315,8 +315,8 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
   auto ear = [&](std::uint32_t x) {
     return border(x ^ 1) && border(next[x] ^ 1);
   };
-  size_to(s.corner_vertex, H);
-  std::fill(s.corner_vertex.begin(), s.corner_vertex.end(), kNone);
+  s.corner_vertex.size_to(H);
+  std::fill_n(s.corner_vertex.data(), H, kNone);
   std::uint32_t* cv = s.corner_vertex.data();
   // Vertices: border corners, then the others.
   std::uint32_t n = 0, ears = 0;
@@ -333,7 +333,7 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
     if (!border(x) && cv[x] == kNone) cv[x] = n++;
   c.vertex_count = n;
   // Interior edges' ranks; V-faces' sizes.
-  size_to(s.rank, E);
+  s.rank.size_to(E);
   std::uint32_t interior = 0;
   for (std::uint32_t e = 0; e < E; ++e)
     s.rank[e] = border(2 * e) || border(2 * e + 1) ? kNone : interior++;
@@ -391,7 +391,7 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
   } else {
     size_to(c.face_halfedges, corners);
     fh = c.face_halfedges.data();
-    size_to(s.edge_of, H);
+    s.edge_of.size_to(H);
   }
   std::uint32_t* into = s.edge_of.data();
   // F-faces: edge i of the F-faces runs from their corner i to the next.
@@ -512,13 +512,13 @@ void refine_dqq_topology(const Level& parent, Dual_scratch& scratch,
   else
     refine_open(parent, scratch, child, last);
   // Open, only the corners' vertices stay for the points.
-  release(scratch.next);
-  release(scratch.prev);
-  release(scratch.edge_of);
-  release(scratch.rank);
-  release(scratch.spoke);
-  release(scratch.cut);
-  release(scratch.halfedges);
+  scratch.next.release();
+  scratch.prev.release();
+  scratch.edge_of.release();
+  scratch.rank.release();
+  scratch.spoke.release();
+  scratch.cut.release();
+  scratch.halfedges.release();
 }
 
 }  // namespace refine

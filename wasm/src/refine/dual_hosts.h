@@ -12,13 +12,45 @@
 // Dual_scratch::corner_vertex, which the points read.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "refine_level.h"
 
 namespace subdivlab {
 namespace refine {
+
+/// A scratch table whose elements start unset (the step writes each one
+/// before it reads it), where std::vector's resize would zero-fill it
+/// first. Its block is kept while big enough.
+template <class T>
+class Scratch_array {
+ public:
+  T* data() { return data_.get(); }
+  const T* data() const { return data_.get(); }
+  std::size_t size() const { return size_; }
+  T& operator[](std::size_t i) { return data_[i]; }
+  const T& operator[](std::size_t i) const { return data_[i]; }
+  /// n elements; the old block goes before a bigger one is taken.
+  void size_to(std::size_t n) {
+    if (capacity_ < n) {
+      release();
+      data_.reset(new T[n]);
+      capacity_ = n;
+    }
+    size_ = n;
+  }
+  void release() {
+    data_.reset();
+    size_ = capacity_ = 0;
+  }
+
+ private:
+  std::unique_ptr<T[]> data_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
 
 /// Per-parent tables a step fills; kept between steps so that their memory
 /// is reused.
@@ -27,23 +59,23 @@ struct Dual_scratch {
   /// the border; a border corner of an ear has a second vertex, this + 1),
   /// the only table refine_dual_points reads. The others are freed when the
   /// topology is done, before the child's positions are allocated.
-  std::vector<std::uint32_t> corner_vertex;
-  std::vector<std::uint32_t> next, prev;  ///< open: per non-border halfedge
+  Scratch_array<std::uint32_t> corner_vertex;
+  Scratch_array<std::uint32_t> next, prev;  ///< open: per non-border halfedge
   /// Open: the F-face halfedge into each corner's vertex.
-  std::vector<std::uint32_t> edge_of;
+  Scratch_array<std::uint32_t> edge_of;
   /// Open: rank of each interior edge; closed: valence of each vertex.
-  std::vector<std::uint32_t> rank;
+  Scratch_array<std::uint32_t> rank;
   /// Closed, per halfedge h: next(h), the child vertex of h's corner and
   /// the child vertex and cut edge of prev(h)'s corner, side by side: a
   /// circulation reads and writes them in the cache lines it visits.
   struct Closed_halfedge {
     std::uint32_t next, vertex, prev_vertex, prev_cut;
   };
-  std::vector<Closed_halfedge> halfedges;
+  Scratch_array<Closed_halfedge> halfedges;
   /// Closed, per corner in vertex order: its spoke's edge slot (where
   /// collect_garbage moves the slots past the kept edges) and its cut
   /// edge's final index.
-  std::vector<std::uint32_t> spoke, cut;
+  Scratch_array<std::uint32_t> spoke, cut;
 };
 
 /// Bytes the scratch adds to a step's peak for a parent with these counts
