@@ -151,9 +151,9 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
     corner_of = c.halfedge_corner.data();
     vhc = c.vertex_halfedge.data();
   }
-  // next(x), and where x's corner goes in its F-face (the F-faces come
+  // prev(y), and where y's corner goes in its F-face (the F-faces come
   // first, each from the corner of its halfedge of highest edge index), in
-  // `vertex` until the corners are numbered.
+  // `vertex` until the corners are numbered: one cache line per halfedge.
   const std::uint32_t* pfh = p.face_halfedges.data();
   for (std::uint32_t f = 0; f < F; ++f) {
     const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
@@ -162,7 +162,7 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
     std::uint32_t x = pfh[end - 1];
     for (std::uint32_t i = begin; i < end; ++i) {
       const std::uint32_t y = pfh[i];
-      hs[x].next = y;
+      hs[y].prev = x;
       hs[y].vertex = i >= start ? i - start + begin : i + end - start;
       x = y;
     }
@@ -172,47 +172,58 @@ void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   // front (k = 3E - o_v - (j + 1) mod n_v, counting the slots from the
   // back); free slot 0 is edge E - 1, free slot r > 0 the spoke of corner
   // r - 1, whose final index spoke[] holds (corner r - 1 <= o_v + n_v - 1).
-  // The E-faces read both at prev(y) for y = next(x): stored at y, so that
-  // they read them in edge order. A circulation is a chain of dependent
-  // reads: a batch of vertices counts its valences in step, so that their
-  // reads overlap, then each circulates again in cache.
+  // The E-faces read both at prev(y) for y = next(x_j) = opposite(x_j+1):
+  // stored at y, so that they read them in edge order. The circulation
+  // runs backwards, x_j = prev(opposite(x_j+1)), reading and writing the
+  // lines of x_j and its opposite only. It is a chain of dependent reads: a
+  // batch of vertices counts its valences in step, so that their reads
+  // overlap, then each circulates again in cache.
   constexpr std::uint32_t kBatch = 16;
-  std::uint32_t at[kBatch];
+  std::uint32_t at[kBatch], count[kBatch];
   std::uint32_t o = 0;
   for (std::uint32_t v0 = 0; v0 < V; v0 += kBatch) {
     const std::uint32_t m = std::min(kBatch, V - v0);
     for (std::uint32_t b = 0; b < m; ++b) {
-      at[b] = hs[vh[v0 + b]].next ^ 1;
-      valence[v0 + b] = 1;
+      at[b] = hs[vh[v0 + b] ^ 1].prev;
+      count[b] = 1;
     }
     for (bool more = true; more;) {
       more = false;
       for (std::uint32_t b = 0; b < m; ++b) {
         if (at[b] == vh[v0 + b]) continue;
-        at[b] = hs[at[b]].next ^ 1;
-        ++valence[v0 + b];
+        at[b] = hs[at[b] ^ 1].prev;
+        ++count[b];
         more = true;
       }
     }
-    for (std::uint32_t v = v0; v < v0 + m; ++v) {
-      const std::uint32_t n = valence[v];
-      std::uint32_t x = vh[v];
+    for (std::uint32_t b = 0; b < m; ++b) {
+      const std::uint32_t n = count[b], first = vh[v0 + b];
+      valence[v0 + b] = n;
       for (std::uint32_t j = 0; j < n; ++j) spoke[o + j] = E + 2 * o + j;
-      for (std::uint32_t j = 0; j < n; ++j) {
+      // Corner j at halfedge x, whose successor x_j+1 is `after_x`.
+      auto corner_at = [&](std::uint32_t j, std::uint32_t x,
+                           std::uint32_t after_x) {
         const std::uint32_t corner = o + j, after = j + 1 == n ? 0 : j + 1;
         const std::uint32_t vertex =
             corner < H - V ? V + corner : H - 1 - corner;
         const std::uint32_t slot = E + 2 * o + n + after;
         const std::uint32_t edge =
             slot < E2 ? slot : spoke[3 * E - 1 - o - after];
-        const std::uint32_t y = hs[x].next;
         fv[hs[x].vertex] = vertex;
         hs[x].vertex = vertex;
         cut[corner] = edge;
-        hs[y].prev_vertex = vertex;
-        hs[y].prev_cut = edge;
-        x = y ^ 1;
+        Dual_scratch::Closed_halfedge& y = hs[after_x ^ 1];
+        y.prev_vertex = vertex;
+        y.prev_cut = edge;
+      };
+      std::uint32_t after_x = first, x = hs[first ^ 1].prev;
+      for (std::uint32_t j = n - 1; j > 0; --j) {
+        const std::uint32_t before = hs[x ^ 1].prev;
+        corner_at(j, x, after_x);
+        after_x = x;
+        x = before;
       }
+      corner_at(0, first, after_x);
       o += n;
     }
   }

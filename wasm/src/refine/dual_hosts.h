@@ -65,11 +65,11 @@ struct Dual_scratch {
   Scratch_array<std::uint32_t> edge_of;
   /// Open: rank of each interior edge; closed: valence of each vertex.
   Scratch_array<std::uint32_t> rank;
-  /// Closed, per halfedge h: next(h), the child vertex of h's corner and
+  /// Closed, per halfedge h: prev(h), the child vertex of h's corner and
   /// the child vertex and cut edge of prev(h)'s corner, side by side: a
   /// circulation reads and writes them in the cache lines it visits.
   struct Closed_halfedge {
-    std::uint32_t next, vertex, prev_vertex, prev_cut;
+    std::uint32_t prev, vertex, prev_vertex, prev_cut;
   };
   Scratch_array<Closed_halfedge> halfedges;
   /// Closed, per corner in vertex order: its spoke's edge slot (where
