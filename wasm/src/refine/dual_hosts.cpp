@@ -24,9 +24,15 @@
 //             starts at its halfedge into c_n-1 and runs c_n-1, ..., c_0).
 // collect_garbage then fills the free slots from the front with the last
 // used slots from the back (Surface_mesh's two-pointer swap); the
-// halfedges of an edge move with it, parity kept. Vertices: V + k stays
-// below 2E, else goes to 2E - 1 - k. F-face f keeps f and starts at the
-// corner of its halfedge of highest edge index (the last join_face sets
+// halfedges of an edge move with it, parity kept: the k-th used slot from
+// the back that lies past the kept count goes to the k-th free slot from
+// the front. The host computes where each slot ends without simulating
+// this (no flags, no move tables). Vertices: V + k stays below 2E, else
+// goes to 2E - 1 - k. Edges: see refine_closed. Faces, in order: the
+// F-faces, then per vertex v its V-face (slot F + o_v) and its n_v - 1
+// freed triangle slots, which take the E-faces from E - 1 down, then the
+// V-faces of the last vertices from V - 1 down. F-face f keeps f and starts at
+// the corner of its halfedge of highest edge index (the last join_face sets
 // it); E-face e runs corner(2e), corner(prev 2e), corner(2e + 1),
 // corner(prev(2e + 1)). Each new vertex's halfedge(v) is its V-face's
 // halfedge into it.

@@ -8,8 +8,12 @@
 // A DQQ level has mixed face degrees (F-faces keep their parent's, V-faces
 // have their vertex's valence, E-faces are quads): face_offsets always.
 // Each new vertex is a corner of the parent (a non-border halfedge x: the
-// corner of face(x) at target(x)); the step records which in
-// Dual_scratch::corner_vertex, which the points read.
+// corner of face(x) at target(x)). The points read which from the child's
+// F-faces (closed) or Dual_scratch::corner_vertex (open).
+//
+// Memory: the step frees its scratch when the topology is done, before
+// refine_dual_points allocates the child's positions, which take its
+// place (the memory model counts the larger of the two).
 #pragma once
 
 #include <cstddef>
