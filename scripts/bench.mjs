@@ -60,10 +60,10 @@ if (!existsSync(wasmBundle)) {
 const { benchWasm, benchIo } = await import(pathToFileURL(wasmBundle).href);
 
 /**
- * The rows: one level of each scheme on the bench mesh, then Catmull-Clark
- * and Loop to 1-5 M faces (two levels of bunny00 and of CGAL's
- * refined_elephant, one level of a 1.2 M-face input), where the fast hosts'
- * targets are set.
+ * The rows: one level of each scheme on the bench mesh, then two levels of
+ * quad-triangle and Doo-Sabin, then Catmull-Clark and Loop to 1-5 M faces
+ * (two levels of bunny00 and of CGAL's refined_elephant, one level of a
+ * 1.2 M-face input), where the fast hosts' targets are set.
  */
 function schemeRows() {
   const rows = SCHEMES.map((scheme) => ({ mesh: meshPath, scheme, levels: 1, runs }));
@@ -72,6 +72,11 @@ function schemeRows() {
   const elephant = cgalDataMesh('refined_elephant.off');
   const million = loopInput(defaultMesh, 2, 'bunny00-loop2.off');
   rows.push({ mesh: defaultMesh, scheme: 'quad-triangle', levels: 2, runs: big });
+  // Doo-Sabin to about 1 M faces (its target counts there): bunny00 x2,
+  // refined_elephant x2.
+  for (const mesh of [defaultMesh, elephant]) {
+    if (mesh) rows.push({ mesh, scheme: 'doo-sabin', levels: 2, runs: big });
+  }
   for (const [mesh, levels] of [
     [defaultMesh, 2],
     [elephant, 2],

@@ -343,16 +343,22 @@ double fast_step_peak(const std::string& scheme, bool face_sums,
   // with faces other than triangles their counts at vertices and edges.
   const bool border = c.border_edges > 0;
   double scratch = 0;
-  if (dual)
-    scratch = refine::dual_scratch_bytes(c.vertices, c.edges, c.faces, border);
-  else if (pqt)
+  // The DQQ step frees its parent's halfedge targets and, closed, their
+  // corners first (run_dual_steps).
+  double freed = 0;
+  if (dual) {
+    scratch =
+        refine::dual_scratch_bytes(c.vertices, c.edges, n.vertices, border);
+    freed = 8 * c.edges + (border ? 0 : 8 * c.edges);
+  } else if (pqt) {
     scratch = refine::pqt_scratch_bytes(c.vertices, c.edges,
                                         c.non_triangles > 0, border);
-  else
+  } else {
     scratch =
         refine::primal_scratch_bytes(c.vertices, face_sums, border) +
         (scheme == "sqrt3" ? refine::sqrt3_scratch_bytes(c.faces, border) : 0);
-  double peak = base + parent + child + scratch;
+  }
+  double peak = base + parent - freed + child + scratch;
   // Level 0 comes from the buffers (check_buffers' temporaries: 32 bytes
   // a corner, 8 a vertex, 4 a face; then the level beside the corners'
   // halfedges and a vertex numbering) or, when it had to be triangulated,

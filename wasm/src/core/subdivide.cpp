@@ -396,10 +396,13 @@ Status run_dual_steps(refine::Level& parent, Counts counts,
   refine::Dual_scratch scratch;
   return run_fast_steps(
       parent, counts, 0, options, in, input, out, level,
-      [&](const refine::Level& p, refine::Level& c, int, bool last) {
+      [&](refine::Level& p, refine::Level& c, int, bool last) {
         const std::uint32_t uncovered = refine::dual_uncovered_degree(p, mask);
         if (uncovered != 0)
           return custom_rules_degree_refusal(options.custom, uncovered);
+        // Before the child is allocated (the memory model counts them
+        // gone).
+        refine::release_unread_tables(p);
         refine::refine_dqq_topology(p, scratch, c, last);
         refine::refine_dual_points(p, mask, scratch, c);
         return Status::success();

@@ -24,9 +24,15 @@
 //             starts at its halfedge into c_n-1 and runs c_n-1, ..., c_0).
 // collect_garbage then fills the free slots from the front with the last
 // used slots from the back (Surface_mesh's two-pointer swap); the
-// halfedges of an edge move with it, parity kept. Vertices: V + k stays
-// below 2E, else goes to 2E - 1 - k. F-face f keeps f and starts at the
-// corner of its halfedge of highest edge index (the last join_face sets
+// halfedges of an edge move with it, parity kept: the k-th used slot from
+// the back that lies past the kept count goes to the k-th free slot from
+// the front. The host computes where each slot ends without simulating
+// this (no flags, no move tables). Vertices: V + k stays below 2E, else
+// goes to 2E - 1 - k. Edges: see refine_closed. Faces, in order: the
+// F-faces, then per vertex v its V-face (slot F + o_v) and its n_v - 1
+// freed triangle slots, which take the E-faces from E - 1 down, then the
+// V-faces of the last vertices from V - 1 down. F-face f keeps f and starts at
+// the corner of its halfedge of highest edge index (the last join_face sets
 // it); E-face e runs corner(2e), corner(prev 2e), corner(2e + 1),
 // corner(prev(2e + 1)). Each new vertex's halfedge(v) is its V-face's
 // halfedge into it.
@@ -53,18 +59,28 @@ namespace subdivlab {
 namespace refine {
 namespace {
 
-/// next/prev of every non-border halfedge, from the faces.
+/// Frees v's block (`v = {}` would keep it: that assigns an empty list).
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+/// next and prev of every non-border halfedge, from the faces.
 void link_faces(const Level& p, Dual_scratch& s) {
   const std::size_t H = 2 * std::size_t{p.edge_count};
-  size_to(s.next, H);
-  size_to(s.prev, H);
+  s.next.size_to(H);
+  s.prev.size_to(H);
+  std::uint32_t* next = s.next.data();
+  std::uint32_t* prev = s.prev.data();
   const std::uint32_t* fh = p.face_halfedges.data();
   for (std::uint32_t f = 0; f < p.face_count; ++f) {
     const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
+    std::uint32_t x = fh[end - 1];
     for (std::uint32_t i = begin; i < end; ++i) {
-      const std::uint32_t x = fh[i], y = fh[i + 1 == end ? begin : i + 1];
-      s.next[x] = y;
-      s.prev[y] = x;
+      const std::uint32_t y = fh[i];
+      next[x] = y;
+      prev[y] = x;
+      x = y;
     }
   }
 }
@@ -91,23 +107,6 @@ void link_halfedges(Level& c) {
   c.border_edge_count = c.edge_count * 2 - c.corner_count();
 }
 
-/// Surface_mesh::collect_garbage's moves: slots at or past `kept` (the
-/// count after) that hold an element go, from the back, to the free slots
-/// below `kept`, from the front. moved[p - kept] is slot p's new index.
-void collect(std::uint8_t* removed, std::size_t slots, std::size_t kept,
-             std::vector<std::uint32_t>& moved) {
-  size_to(moved, slots - kept);
-  std::size_t i0 = 0, i1 = slots - 1;
-  while (true) {
-    while (removed[i0] == 0 && i0 < i1) ++i0;
-    while (removed[i1] != 0 && i0 < i1) --i1;
-    if (i0 >= i1) break;
-    moved[i1 - kept] = static_cast<std::uint32_t>(i0);
-    removed[i0] = 0;
-    removed[i1] = 1;
-  }
-}
-
 void set_offsets(Level& c, std::uint32_t faces) {
   c.face_count = faces;
   c.uniform_degree = 0;
@@ -123,130 +122,202 @@ void sum_offsets(Level& c) {
 
 void refine_closed(const Level& p, Dual_scratch& s, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
-  const std::uint32_t H = 2 * E;
-  link_faces(p, s);
-  const std::uint32_t* next = s.next.data();
-  const std::uint32_t* prev = s.prev.data();
+  const std::uint32_t H = 2 * E, E2 = 4 * E, F2 = F + E + V;
   const std::uint32_t* vh = p.vertex_halfedge.data();
-  size_to(s.corner_vertex, H);
-  size_to(s.edge_of, H);
-  std::uint32_t* cv = s.corner_vertex.data();
-  std::uint32_t* cut = s.edge_of.data();
-  const std::size_t edge_slots = 6 * std::size_t{E} + 1,
-                    face_slots = F + 3 * std::size_t{E} + 1;
-  size_to(s.removed, edge_slots + face_slots);
-  std::fill(s.removed.begin(), s.removed.end(), 0);
-  std::uint8_t* removed_edge = s.removed.data();
-  std::uint8_t* removed_face = removed_edge + edge_slots;
-  removed_edge[E - 1] = 1;
-  removed_face[F + H] = 1;
-  // Corners, vertex by vertex.
-  size_to(s.rank, V);
+  s.halfedges.size_to(H);
+  s.spoke.size_to(H);
+  s.cut.size_to(H);
+  s.rank.size_to(V);
+  Dual_scratch::Closed_halfedge* hs = s.halfedges.data();
+  std::uint32_t* spoke = s.spoke.data();
+  std::uint32_t* cut = s.cut.data();
   std::uint32_t* valence = s.rank.data();
-  std::uint32_t o = 0;
-  for (std::uint32_t v = 0; v < V; ++v) {
-    const std::uint32_t first = vh[v];
-    std::uint32_t n = 0, x = first;
-    do {
-      ++n;
-      x = next[x] ^ 1;
-    } while (x != first);
-    valence[v] = n;
-    for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
-      const std::uint32_t slot = V + o + j;
-      cv[x] = slot < H ? slot : V + H - 1 - slot;
-      cut[x] = E + 2 * o + n + (j + 1 == n ? 0 : j + 1);
-      removed_edge[E + 2 * o + j] = 1;
-      if (j > 0) removed_face[F + o + j] = 1;
-    }
-    o += n;
-  }
-  const std::uint32_t E2 = 4 * E, F2 = F + E + V;
-  std::vector<std::uint32_t> moved_faces;
-  collect(removed_face, face_slots, F2, moved_faces);
-  collect(removed_edge, edge_slots, E2, s.moved);
-  const std::uint32_t* moved = s.moved.data();
-  auto edge = [&](std::uint32_t slot) {
-    return slot < E2 ? slot : moved[slot - E2];
-  };
-  auto face = [&](std::uint32_t slot) {
-    return slot < F2 ? slot : moved_faces[slot - F2];
-  };
-  // The F-face halfedge into corner(x).
-  auto along = [&](std::uint32_t x) {
-    const std::uint32_t e = x >> 1;
-    return 2 * edge((x & 1) != 0 ? 5 * E + 1 + e : e == 0 ? 5 * E : e - 1);
-  };
-
   c.vertex_count = H;
   c.edge_count = E2;
   set_offsets(c, F2);
-  std::uint32_t* offsets = c.face_offsets.data();
-  for (std::uint32_t f = 0; f < F; ++f)
-    offsets[f + 1] = p.face_end(f) - p.face_begin(f);
-  for (std::uint32_t e = 0; e < E; ++e) offsets[face(F + H + 1 + e) + 1] = 4;
-  o = 0;
-  for (std::uint32_t v = 0; v < V; ++v) {
-    offsets[face(F + o) + 1] = valence[v];
-    o += valence[v];
-  }
-  sum_offsets(c);
   size_to(c.face_vertices, 4 * std::size_t{H});
+  std::uint32_t* offsets = c.face_offsets.data();
   std::uint32_t* fv = c.face_vertices.data();
   std::uint32_t* fh = nullptr;
+  std::uint32_t* target = nullptr;
+  std::uint32_t* corner_of = nullptr;
+  std::uint32_t* vhc = nullptr;
   if (last) {
-    c.face_halfedges = {};
-    c.vertex_halfedge = {};
+    release(c.face_halfedges);
+    release(c.vertex_halfedge);
+    release(c.halfedge_target);
+    release(c.halfedge_corner);
   } else {
     size_to(c.face_halfedges, 4 * std::size_t{H});
     size_to(c.vertex_halfedge, H);
+    size_to(c.halfedge_target, 2 * std::size_t{E2});
+    size_to(c.halfedge_corner, 2 * std::size_t{E2});
     fh = c.face_halfedges.data();
+    target = c.halfedge_target.data();
+    corner_of = c.halfedge_corner.data();
+    vhc = c.vertex_halfedge.data();
   }
+  // prev(y), and where y's corner goes in its F-face (the F-faces come
+  // first, each from the corner of its halfedge of highest edge index), in
+  // `vertex` until the corners are numbered: one cache line per halfedge.
+  const std::uint32_t* pfh = p.face_halfedges.data();
   for (std::uint32_t f = 0; f < F; ++f) {
-    const std::uint32_t begin = p.face_begin(f), k = p.face_end(f) - begin;
-    const std::uint32_t* ph = p.face_halfedges.data() + begin;
-    const std::uint32_t start = first_corner_offset(ph, k), out = offsets[f];
-    for (std::uint32_t i = 0; i < k; ++i) {
-      const std::uint32_t x = ph[start + i < k ? start + i : start + i - k];
-      fv[out + i] = cv[x];
-      if (fh != nullptr) fh[out + i] = along(x);
+    const std::uint32_t begin = p.face_begin(f), end = p.face_end(f);
+    const std::uint32_t start =
+        begin + first_corner_offset(pfh + begin, end - begin);
+    std::uint32_t x = pfh[end - 1];
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t y = pfh[i];
+      hs[y].prev = x;
+      hs[y].vertex = i >= start ? i - start + begin : i + end - start;
+      x = y;
     }
   }
-  for (std::uint32_t e = 0; e < E; ++e) {
-    const std::uint32_t h0 = 2 * e, h1 = h0 + 1,
-                        out = offsets[face(F + H + 1 + e)];
-    const std::uint32_t p0 = prev[h0], p1 = prev[h1];
-    fv[out] = cv[h0];
-    fv[out + 1] = cv[p0];
-    fv[out + 2] = cv[h1];
-    fv[out + 3] = cv[p1];
-    if (fh == nullptr) continue;
-    fh[out] = 2 * edge(cut[p1]);
-    fh[out + 1] = along(h0) ^ 1;
-    fh[out + 2] = 2 * edge(cut[p0]);
-    fh[out + 3] = along(h1) ^ 1;
+  // Corners, vertex by vertex: each one's vertex and the final index of its
+  // cut edge. A cut slot at or past 4E moves to the k-th free slot from the
+  // front (k = 3E - o_v - (j + 1) mod n_v, counting the slots from the
+  // back); free slot 0 is edge E - 1, free slot r > 0 the spoke of corner
+  // r - 1, whose final index spoke[] holds (corner r - 1 <= o_v + n_v - 1).
+  // The E-faces read both at prev(y) for y = next(x_j) = opposite(x_j+1):
+  // stored at y, so that they read them in edge order. The circulation
+  // runs backwards, x_j = prev(opposite(x_j+1)), reading and writing the
+  // lines of x_j and its opposite only. It is a chain of dependent reads: a
+  // batch of vertices counts its valences in step, so that their reads
+  // overlap, then each circulates again in cache.
+  constexpr std::uint32_t kBatch = 16;
+  std::uint32_t at[kBatch], count[kBatch];
+  std::uint32_t o = 0;
+  for (std::uint32_t v0 = 0; v0 < V; v0 += kBatch) {
+    const std::uint32_t m = std::min(kBatch, V - v0);
+    for (std::uint32_t b = 0; b < m; ++b) {
+      at[b] = hs[vh[v0 + b] ^ 1].prev;
+      count[b] = 1;
+    }
+    for (bool more = true; more;) {
+      more = false;
+      for (std::uint32_t b = 0; b < m; ++b) {
+        if (at[b] == vh[v0 + b]) continue;
+        at[b] = hs[at[b] ^ 1].prev;
+        ++count[b];
+        more = true;
+      }
+    }
+    for (std::uint32_t b = 0; b < m; ++b) {
+      const std::uint32_t n = count[b], first = vh[v0 + b];
+      valence[v0 + b] = n;
+      for (std::uint32_t j = 0; j < n; ++j) spoke[o + j] = E + 2 * o + j;
+      // Corner j at halfedge x, whose successor x_j+1 is `after_x`.
+      auto corner_at = [&](std::uint32_t j, std::uint32_t x,
+                           std::uint32_t after_x) {
+        const std::uint32_t corner = o + j, after = j + 1 == n ? 0 : j + 1;
+        const std::uint32_t vertex =
+            corner < H - V ? V + corner : H - 1 - corner;
+        const std::uint32_t slot = E + 2 * o + n + after;
+        const std::uint32_t edge =
+            slot < E2 ? slot : spoke[3 * E - 1 - o - after];
+        fv[hs[x].vertex] = vertex;
+        hs[x].vertex = vertex;
+        cut[corner] = edge;
+        Dual_scratch::Closed_halfedge& y = hs[after_x ^ 1];
+        y.prev_vertex = vertex;
+        y.prev_cut = edge;
+      };
+      std::uint32_t after_x = first, x = hs[first ^ 1].prev;
+      for (std::uint32_t j = n - 1; j > 0; --j) {
+        const std::uint32_t before = hs[x ^ 1].prev;
+        corner_at(j, x, after_x);
+        after_x = x;
+        x = before;
+      }
+      corner_at(0, first, after_x);
+      o += n;
+    }
   }
-  o = 0;
-  for (std::uint32_t v = 0; v < V; ++v) {
-    const std::uint32_t n = valence[v];
-    std::uint32_t x = vh[v];
-    const std::uint32_t out = offsets[face(F + o)];
-    for (std::uint32_t j = 0; j < n; ++j, x = next[x] ^ 1) {
-      fv[out + n - 1 - j] = cv[x];
+  // The F-face halfedge along x (the F-face edges' slots past 4E move too).
+  auto along = [&](std::uint32_t x) {
+    const std::uint32_t e = x >> 1;
+    if ((x & 1) == 0) return 2 * (e == 0 ? spoke[E - 1] : e - 1);
+    return 2 * (e + 1 == E ? E - 1 : spoke[E - 2 - e]);
+  };
+
+  // Every halfedge of a closed child lies in a face: its target and corner
+  // come with the face.
+  auto close_face = [&](std::uint32_t begin, std::uint32_t end) {
+    if (fh == nullptr) return;
+    for (std::uint32_t i = begin, before = end - 1; i < end; before = i++) {
+      const std::uint32_t h = fh[i];
+      target[h] = fv[i];
+      target[h ^ 1] = fv[before];
+      corner_of[h] = i;
+    }
+  };
+  std::uint32_t f2 = 0, out = 0;
+  // F-faces (their vertices are in place): each keeps its parent's index.
+  for (std::uint32_t f = 0; f < F; ++f) {
+    const std::uint32_t k = p.face_end(f) - out;
+    if (fh != nullptr) {
+      const std::uint32_t start = first_corner_offset(pfh + out, k);
+      for (std::uint32_t i = 0; i < k; ++i)
+        fh[out + i] =
+            along(pfh[out + (start + i < k ? start + i : start + i - k)]);
+      close_face(out, out + k);
+    }
+    out += k;
+    offsets[++f2] = out;
+  }
+  // The V-face of u (its corners o_u.. in reverse circulation, each
+  // entered by its cut edge's odd halfedge).
+  auto v_face = [&](std::uint32_t u, std::uint32_t ou) {
+    const std::uint32_t n = valence[u];
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const std::uint32_t corner = ou + j;
+      const std::uint32_t vertex = corner < H - V ? V + corner : H - 1 - corner;
+      fv[out + n - 1 - j] = vertex;
       if (fh == nullptr) continue;
-      const std::uint32_t h = 2 * edge(cut[x]) + 1;
+      const std::uint32_t h = 2 * cut[corner] + 1;
       fh[out + n - 1 - j] = h;
-      c.vertex_halfedge[cv[x]] = h;
+      vhc[vertex] = h;
+    }
+    close_face(out, out + n);
+    out += n;
+    offsets[++f2] = out;
+  };
+  // Then, in slot order after collect_garbage: vertex v's V-face at slot
+  // F + o_v, then its cut triangles' slots (freed), which take from the
+  // back the E-faces (e = E - 1 down to 0), then the V-faces of the last
+  // vertices (from V - 1 down).
+  o = 0;
+  std::uint32_t r = 0, late = V, late_o = H;
+  for (std::uint32_t v = 0; v < V && f2 < F2; ++v) {
+    v_face(v, o);
+    const std::uint32_t n = valence[v];
+    for (std::uint32_t j = 1; j < n && f2 < F2; ++j, ++r) {
+      if (r >= E) {
+        --late;
+        late_o -= valence[late];
+        v_face(late, late_o);
+        continue;
+      }
+      const std::uint32_t e = E - 1 - r, h0 = 2 * e, h1 = h0 + 1;
+      const Dual_scratch::Closed_halfedge &a = hs[h0], &b = hs[h1];
+      fv[out] = a.vertex;
+      fv[out + 1] = a.prev_vertex;
+      fv[out + 2] = b.vertex;
+      fv[out + 3] = b.prev_vertex;
+      if (fh != nullptr) {
+        fh[out] = 2 * b.prev_cut;
+        fh[out + 1] = along(h0) ^ 1;
+        fh[out + 2] = 2 * a.prev_cut;
+        fh[out + 3] = along(h1) ^ 1;
+      }
+      close_face(out, out + 4);
+      out += 4;
+      offsets[++f2] = out;
     }
     o += n;
   }
-  if (last) {
-    c.halfedge_target = {};
-    c.halfedge_corner = {};
-    c.border_edge_count = 0;
-  } else {
-    link_halfedges(c);
-  }
+  offsets[0] = 0;
+  c.border_edge_count = 0;
 }
 
 void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
@@ -261,8 +332,8 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
   auto ear = [&](std::uint32_t x) {
     return border(x ^ 1) && border(next[x] ^ 1);
   };
-  size_to(s.corner_vertex, H);
-  std::fill(s.corner_vertex.begin(), s.corner_vertex.end(), kNone);
+  s.corner_vertex.size_to(H);
+  std::fill_n(s.corner_vertex.data(), H, kNone);
   std::uint32_t* cv = s.corner_vertex.data();
   // Vertices: border corners, then the others.
   std::uint32_t n = 0, ears = 0;
@@ -279,7 +350,7 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
     if (!border(x) && cv[x] == kNone) cv[x] = n++;
   c.vertex_count = n;
   // Interior edges' ranks; V-faces' sizes.
-  size_to(s.rank, E);
+  s.rank.size_to(E);
   std::uint32_t interior = 0;
   for (std::uint32_t e = 0; e < E; ++e)
     s.rank[e] = border(2 * e) || border(2 * e + 1) ? kNone : interior++;
@@ -333,11 +404,11 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
   std::uint32_t* fv = c.face_vertices.data();
   std::uint32_t* fh = nullptr;
   if (last) {
-    c.face_halfedges = {};
+    release(c.face_halfedges);
   } else {
     size_to(c.face_halfedges, corners);
     fh = c.face_halfedges.data();
-    size_to(s.edge_of, H);
+    s.edge_of.size_to(H);
   }
   std::uint32_t* into = s.edge_of.data();
   // F-faces: edge i of the F-faces runs from their corner i to the next.
@@ -401,9 +472,9 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
     fan += on_border;
   }
   if (last) {
-    c.halfedge_target = {};
-    c.halfedge_corner = {};
-    c.vertex_halfedge = {};
+    release(c.halfedge_target);
+    release(c.halfedge_corner);
+    release(c.vertex_halfedge);
     c.border_edge_count = 0;
   } else {
     link_halfedges(c);
@@ -413,18 +484,16 @@ void refine_open(const Level& p, Dual_scratch& s, Level& c, bool last) {
 
 }  // namespace
 
-double dual_scratch_bytes(double vertices, double edges, double faces,
+double dual_scratch_bytes(double vertices, double edges, double child_vertices,
                           bool border) {
   const double halfedges = 2 * edges;
-  // corner_vertex, next, prev, edge_of: 4 bytes a halfedge each.
-  double bytes = 4 * 4 * halfedges;
-  if (border)
-    bytes += 4 * edges;  // ranks
-  else
-    bytes += 4 * vertices +                               // valences
-             (6 * edges + 1) + (faces + 3 * edges + 1) +  // removed flags
-             4 * (2 * edges + 1) + 4 * (2 * edges - vertices + 1);  // moves
-  return bytes;
+  // Open: corner_vertex, next, prev, edge_of (4 bytes a halfedge each) and
+  // the edges' ranks; the points keep corner_vertex. Closed: halfedges (16
+  // bytes each), spoke, cut and the vertices' valences; the points keep
+  // nothing.
+  const double topology =
+      border ? 4 * 4 * halfedges + 4 * edges : 6 * 4 * halfedges + 4 * vertices;
+  return std::max(topology - 24 * child_vertices, border ? 4 * halfedges : 0.0);
 }
 
 void add_face_vertex_halfedges(Level& l) {
@@ -438,13 +507,35 @@ void add_face_vertex_halfedges(Level& l) {
     if (l.halfedge_corner[h] == kNone) vh[l.halfedge_target[h]] = h;
 }
 
+void release_unread_tables(Level& parent) {
+  release(parent.halfedge_target);
+  if (parent.border_edge_count == 0) release(parent.halfedge_corner);
+}
+
 void refine_dqq_topology(const Level& parent, Dual_scratch& scratch,
                          Level& child, bool last) {
-  child.edge_marks = {};
+  release(child.edge_marks);
+  // The child's positions come after the topology, in the place of its
+  // scratch (refine_dual_points).
+  release(child.positions);
+  if (last) {  // the last level has no halfedge tables: free the stale ones
+    release(child.face_halfedges);
+    release(child.halfedge_target);
+    release(child.halfedge_corner);
+    release(child.vertex_halfedge);
+  }
   if (parent.border_edge_count == 0)
     refine_closed(parent, scratch, child, last);
   else
     refine_open(parent, scratch, child, last);
+  // Open, only the corners' vertices stay for the points.
+  scratch.next.release();
+  scratch.prev.release();
+  scratch.edge_of.release();
+  scratch.rank.release();
+  scratch.spoke.release();
+  scratch.cut.release();
+  scratch.halfedges.release();
 }
 
 }  // namespace refine

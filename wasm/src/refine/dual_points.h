@@ -1,6 +1,7 @@
 // The points of a DQQ step: one pass over the parent's corners, face by
-// face, each writing the child vertex dual_hosts.h gave the corner
-// (Dual_scratch::corner_vertex). Owner: dual_points.cpp.
+// face, each writing the child vertex dual_hosts.h gave the corner (closed:
+// the child's F-face of the face lists them; open:
+// Dual_scratch::corner_vertex). Owner: dual_points.cpp.
 #pragma once
 
 #include <cstdint>
