@@ -59,12 +59,6 @@ namespace subdivlab {
 namespace refine {
 namespace {
 
-/// Frees v's block (`v = {}` would keep it: that assigns an empty list).
-template <class T>
-void release(std::vector<T>& v) {
-  std::vector<T>().swap(v);
-}
-
 /// next and prev of every non-border halfedge, from the faces.
 void link_faces(const Level& p, Dual_scratch& s) {
   const std::size_t H = 2 * std::size_t{p.edge_count};

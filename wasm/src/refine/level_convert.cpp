@@ -57,7 +57,7 @@ Level level_from_mesh(const Mesh& mesh) {
   l.face_offsets.push_back(l.corner_count());
   if (uniform) {
     l.uniform_degree = degree;
-    l.face_offsets = {};
+    release(l.face_offsets);
   }
   return l;
 }
@@ -113,7 +113,7 @@ Level level_from_buffers(const Mesh_buffers& in,
   // Every vertex used (nearly always): the level keeps the input's indices.
   const bool all_used = used == nv;
   if (all_used) {
-    rank = {};
+    release(rank);
     l.positions = in.positions;
   } else {
     l.positions.resize(3 * std::size_t{used});
@@ -145,7 +145,7 @@ Level level_from_buffers(const Mesh_buffers& in,
   if (std::all_of(in.face_sizes.begin(), in.face_sizes.end(),
                   [&](std::uint32_t k) { return k == degree; })) {
     l.uniform_degree = degree;
-    l.face_offsets = {};
+    release(l.face_offsets);
   }
   return l;
 }

@@ -78,8 +78,8 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
     size_to(c.face_halfedges, child_corners);
     size_to(c.halfedge_corner, 2 * std::size_t{child_edges});
   } else {
-    c.face_halfedges = {};
-    c.halfedge_corner = {};
+    release(c.face_halfedges);
+    release(c.halfedge_corner);
   }
   if (parts.targets) {
     size_to(c.halfedge_target, 2 * std::size_t{child_edges});
@@ -93,7 +93,7 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
       t[2 * (E + e) + 1] = m;
     }
   } else {
-    c.halfedge_target = {};
+    release(c.halfedge_target);
   }
   if (parts.halfedges && p.border_edge_count > 0) {
     // Border halves: the faces below never write them.
@@ -105,9 +105,9 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
       cc[second_half(x, E)] = kNone;
     }
   }
-  c.marked_ends = {};
+  release(c.marked_ends);
   if (p.edge_marks.empty()) {
-    c.edge_marks = {};
+    release(c.edge_marks);
   } else if (parts.targets) {
     size_to(c.edge_marks, child_edges);
     std::memcpy(c.edge_marks.data(), p.edge_marks.data(), E);
@@ -116,7 +116,7 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
   } else {
     // The last level: a marked edge a-b's halves e (a -> m) and E + e
     // (m -> b) are the marked edges, the spokes never are.
-    c.edge_marks = {};
+    release(c.edge_marks);
     const std::uint8_t* marks = p.edge_marks.data();
     const std::uint32_t* pt = p.halfedge_target.data();
     const auto marked = static_cast<std::size_t>(
@@ -284,7 +284,7 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
   c.vertex_count = V + E + F;
   c.face_count = S;
   c.uniform_degree = 4;
-  c.face_offsets = {};
+  release(c.face_offsets);
   const Child out(c, parts);
   const Parent in(p);
   for (std::uint32_t f = 0; f < F; ++f) {
@@ -303,7 +303,7 @@ void refine_ptq_topology(const Level& p, Level& c, bool last) {
   c.vertex_count = V + E;
   c.face_count = 4 * F;
   c.uniform_degree = 3;
-  c.face_offsets = {};
+  release(c.face_offsets);
   const Child out(c, parts);
   const Parent in(p);
   for (std::uint32_t f = 0; f < F; ++f)
@@ -332,7 +332,7 @@ void refine_pqt_topology(const Level& p, Level& c, bool last) {
     size_to(c.face_offsets, std::size_t{c.face_count} + 1);
     c.face_offsets[c.face_count] = 4 * S;
   } else {
-    c.face_offsets = {};
+    release(c.face_offsets);
   }
   const Child out(c, parts);
   const Parent in(p);

@@ -42,8 +42,8 @@ void count_valences(const Level& p, Primal_scratch& s) {
       s.border_prev[to] = from;
     }
   } else {
-    s.border_next = {};
-    s.border_prev = {};
+    release(s.border_next);
+    release(s.border_prev);
   }
 }
 
@@ -227,9 +227,9 @@ void refine_pqt_points(const Level& p, const Quad_triangle_mask& mask,
     size_to(s.edge_polygons, E);
     std::fill(s.edge_polygons.begin(), s.edge_polygons.end(), 0);
   } else {
-    s.faces = {};
-    s.polygons = {};
-    s.edge_polygons = {};
+    release(s.faces);
+    release(s.polygons);
+    release(s.edge_polygons);
   }
   const double* in = p.positions.data();
   double* out = c.positions.data();

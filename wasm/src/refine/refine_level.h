@@ -86,6 +86,13 @@ struct Level {
   }
 };
 
+/// Frees v's block (`v = {}` would keep it: that assigns an empty list,
+/// keeping the capacity).
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
 /// Sizes the vector to n elements; a vector too small is freed before the
 /// new block is taken (its contents are not kept), so that old and new
 /// blocks never coexist.

@@ -123,7 +123,7 @@ void refine_sqrt3_topology(const Level& p, bool border_step, Sqrt3_scratch& s,
       before += kb != kNoBorder ? 1 : 0;
     }
   } else {
-    s.face_code = {};
+    release(s.face_code);
   }
   const std::uint32_t* code = s.face_code.data();
 
@@ -131,9 +131,9 @@ void refine_sqrt3_topology(const Level& p, bool border_step, Sqrt3_scratch& s,
   c.edge_count = E + 3 * F + B;
   c.face_count = 3 * F;
   c.uniform_degree = 3;
-  c.face_offsets = {};
-  c.vertex_halfedge = {};
-  c.edge_marks = {};
+  release(c.face_offsets);
+  release(c.vertex_halfedge);
+  release(c.edge_marks);
   c.border_edge_count = p.border_edge_count + 2 * B;
   const Writer out{c, !last};
   size_to(c.face_vertices, 9 * std::size_t{F});
@@ -142,9 +142,9 @@ void refine_sqrt3_topology(const Level& p, bool border_step, Sqrt3_scratch& s,
     size_to(c.halfedge_corner, 2 * std::size_t{c.edge_count});
     size_to(c.halfedge_target, 2 * std::size_t{c.edge_count});
   } else {
-    c.face_halfedges = {};
-    c.halfedge_corner = {};
-    c.halfedge_target = {};
+    release(c.face_halfedges);
+    release(c.halfedge_corner);
+    release(c.halfedge_target);
   }
 
   // The triangle of non-border parent halfedge x after step 1.
