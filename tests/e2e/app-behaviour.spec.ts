@@ -141,11 +141,12 @@ test('after a cancelled step the worker restarts without the levels it kept: the
 }) => {
   test.setTimeout(120_000);
   await app.open();
-  // 40 000 quads: level 1 has 160 000, level 2 (cancelled) would have 640 000.
-  await app.load('grid-200.off', quadGridOff(200));
+  // 90 000 quads: level 1 has 360 000, level 2 (cancelled) would have 1 440 000
+  // (a step to 640 000 now ends before the progress shows, 200 ms).
+  await app.load('grid-300.off', quadGridOff(300));
   await app.subdivide();
   const level1 = await app.positions();
-  expect(level1.length).toBe(3 * 401 * 401);
+  expect(level1.length).toBe(3 * 601 * 601);
   await app.byTestId('controls.subdivide').click();
   await expect(app.byTestId('progress')).toBeVisible();
   await app.byTestId('progress.cancel').click();
@@ -159,11 +160,11 @@ test('after a cancelled step the worker restarts without the levels it kept: the
   await test.step('it exports', async () => {
     await app.byTestId('export-panel').locator('summary').click();
     const off = readFileSync(await (await app.download('export.off')).path(), 'utf8');
-    expect(off.split('\n', 2)[1]).toBe(`${401 * 401} 160000 0`);
+    expect(off.split('\n', 2)[1]).toBe(`${601 * 601} 360000 0`);
   });
   await test.step('and the next step starts from it', async () => {
     await app.subdivide();
-    expect((await app.facts()).faces).toBe(640_000);
+    expect((await app.facts()).faces).toBe(1_440_000);
   });
 });
 
