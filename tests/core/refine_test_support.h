@@ -59,6 +59,25 @@ inline const char* const kCgalMeshes[] = {"holes.off", "fandisk.off",
                                           "mannequin-devil.off",
                                           "cube_quad.off", "torus_quad.off"};
 
+/// A triangle and a quad sharing two edges at a two-valent vertex (0):
+/// quad-triangle refines it, where it refuses two triangles so joined.
+inline Mesh_buffers two_valent_triangle_and_quad() {
+  Mesh_buffers mixed;
+  mixed.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1};
+  mixed.face_sizes = {3, 4};
+  mixed.face_indices = {0, 1, 2, 1, 0, 2, 3};
+  return mixed;
+}
+
+/// Two quads sharing all four edges: every vertex is two-valent.
+inline Mesh_buffers two_valent_quads() {
+  Mesh_buffers quads;
+  quads.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  quads.face_sizes = {4, 4};
+  quads.face_indices = {0, 1, 2, 3, 0, 3, 2, 1};
+  return quads;
+}
+
 /// A pentagonal prism: two pentagons (the first the bottom), five quads.
 inline Mesh_buffers pentagonal_prism() {
   Mesh_buffers prism;

@@ -27,6 +27,7 @@
 #include "core/mesh_io.h"
 #include "core/quad_triangle_3.h"
 #include "core/subdivide.h"
+#include "refine_test_support.h"
 
 namespace subdivlab {
 namespace {
@@ -881,14 +882,8 @@ TEST(ExtraSubdivide, QuadTriangleRefusesOnlyTwoValentVerticesBetweenTriangles) {
       "faces share two edges and the result would repeat edges "
       "(catmull-clark can refine it)");
   // A triangle and a quad, or two quads, at such a vertex are fine.
-  Mesh_buffers mixed;
-  mixed.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1};
-  mixed.face_sizes = {3, 4};
-  mixed.face_indices = {0, 1, 2, 1, 0, 2, 3};
-  Mesh_buffers quads;
-  quads.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-  quads.face_sizes = {4, 4};
-  quads.face_indices = {0, 1, 2, 3, 0, 3, 2, 1};
+  const Mesh_buffers mixed = refine_test::two_valent_triangle_and_quad();
+  const Mesh_buffers quads = refine_test::two_valent_quads();
   for (const Mesh_buffers* in : {&mixed, &quads}) {
     const Mesh_buffers out = run(*in, options("quad-triangle", 3));
     Mesh m;

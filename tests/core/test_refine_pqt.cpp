@@ -33,22 +33,15 @@ using namespace refine_test;
 /// quad, and between two quads (quad-triangle refines them, test_extra);
 /// a pentagonal prism (two pentagons, five quads).
 std::vector<std::pair<std::string, Mesh_buffers>> odd_meshes() {
-  Mesh_buffers mixed;
-  mixed.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1};
-  mixed.face_sizes = {3, 4};
-  mixed.face_indices = {0, 1, 2, 1, 0, 2, 3};
-  Mesh_buffers quads;
-  quads.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-  quads.face_sizes = {4, 4};
-  quads.face_indices = {0, 1, 2, 3, 0, 3, 2, 1};
   const Mesh_buffers prism = pentagonal_prism();
   // The prism without one pentagon: open, a border of five quads.
   Mesh_buffers cup = prism;
   cup.face_sizes.erase(cup.face_sizes.begin());
   cup.face_indices.erase(cup.face_indices.begin(),
                          cup.face_indices.begin() + 5);
-  return {{"triangle and quad at a two-valent vertex", mixed},
-          {"two quads at a two-valent vertex", quads},
+  return {{"triangle and quad at a two-valent vertex",
+           two_valent_triangle_and_quad()},
+          {"two quads at a two-valent vertex", two_valent_quads()},
           {"pentagonal prism", prism},
           {"open pentagonal cup", cup}};
 }
