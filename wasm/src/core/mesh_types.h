@@ -15,6 +15,56 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
+/// How the border of a mesh is subdivided when it carries tags, as
+/// OpenSubdiv's Sdc::Options::VtxBoundaryInterpolation (and the OBJ tag
+/// `t interpolateboundary 1/0/0 N`: 0 none, 1 edge and corner, 2 edge only).
+enum class Boundary_interpolation : std::uint8_t {
+  /// Border edges sharp (CGAL's border rules; the default).
+  edge_only = 0,
+  /// Also every vertex of a single face with two border edges a corner.
+  edge_and_corner = 1,
+  /// Faces at the border are holes: they shape their neighbours only.
+  none = 2,
+};
+
+/// How semi-sharp sharpness decays from level to level, as OpenSubdiv's
+/// Sdc::Options::CreasingMethod (OBJ tag `t creasemethod 0/0/1 normal` or
+/// `chaikin`).
+enum class Crease_method : std::uint8_t {
+  uniform = 0,  ///< every sharpness less one per level (the default)
+  chaikin = 1,  ///< a crease's edges blend their sharpness along it
+};
+
+/// OpenSubdiv's tags on a mesh (OBJ `t` lines: crease, corner, hole,
+/// interpolateboundary), which Catmull-Clark and Loop apply with
+/// OpenSubdiv's rules. Sharpness is OpenSubdiv's float: 0 smooth, 10 and
+/// above infinitely sharp, decreasing by one per level in between.
+struct Mesh_tags {
+  /// Pairs of vertex indices a0 b0 a1 b1 ..., each an edge of the mesh,
+  /// with the sharpness of each pair (> 0; an edge appears once).
+  std::vector<std::uint32_t> crease_edges;
+  std::vector<float> crease_sharpness;
+  /// Vertex indices with their sharpness (> 0; a vertex appears once).
+  std::vector<std::uint32_t> corner_vertices;
+  std::vector<float> corner_sharpness;
+  /// Face indices (ascending, once each) that are holes: still part of the
+  /// mesh, refined and shaping their neighbours, but not drawn.
+  std::vector<std::uint32_t> holes;
+  Boundary_interpolation boundary = Boundary_interpolation::edge_only;
+  /// The file had an interpolateboundary tag (written back on export).
+  bool boundary_given = false;
+  Crease_method crease_method = Crease_method::uniform;
+  /// The file had a creasemethod tag (written back on export).
+  bool crease_method_given = false;
+
+  /// Nothing that changes a result: no crease, corner or hole, and the
+  /// default border rules.
+  bool empty() const {
+    return crease_edges.empty() && corner_vertices.empty() && holes.empty() &&
+           boundary == Boundary_interpolation::edge_only;
+  }
+};
+
 /// The interchange form of a polygon mesh: flat arrays, polygons kept as
 /// polygons. Face f uses face_indices[o .. o + face_sizes[f]) where o is the
 /// sum of the earlier face sizes.
@@ -25,6 +75,9 @@ struct Mesh_buffers {
   /// Edges of the level-0 (control) mesh that survive in this mesh, as pairs
   /// of vertex indices a0 b0 a1 b1 ...; empty when not tracked.
   std::vector<std::uint32_t> control_edges;
+  /// OpenSubdiv's tags (creases, corners, holes, border mode); empty on
+  /// meshes without them.
+  Mesh_tags tags;
 
   std::size_t vertex_count() const { return positions.size() / 3; }
   std::size_t face_count() const { return face_sizes.size(); }

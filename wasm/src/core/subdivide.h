@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct Subdivide_options {
   bool smooth_boundary = true;
   /// custom: the host and the mask weights (custom_rules.h).
   Custom_rules custom;
+  /// Catmull-Clark and Loop on a mesh with tags (Mesh_tags): override the
+  /// mesh's creasemethod and interpolateboundary tags when set.
+  std::optional<Crease_method> crease_method;
+  std::optional<Boundary_interpolation> boundary;
   /// Run CGAL's hosts even where a fast host (refine/) exists: the
   /// reference the fast hosts are compared with, in the tests and in the
   /// benchmark's CGAL column. Same results (to 1e-12), more time and memory.
