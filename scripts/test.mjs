@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // Every test, in order, after `node scripts/setup.mjs` (npm test runs both):
 //   1. lint        biome check + tsc --noEmit + clang-format --check
-//   2. native      build/native/core_tests (GoogleTest; built by setup.mjs --native)
+//   2. native      build/native/core_tests and osd_tests (GoogleTest; built by
+//                  setup.mjs --native; osd_tests compares creasing with OpenSubdiv)
 //   3. wasm32      the same tests built with em++, run by Node
 //                  (build/wasm/core_tests_wasm.cjs; setup.mjs --wasm-tests)
 //   4. unit        vitest (tests/unit, Node against the real WASM and the CLI)
@@ -81,7 +82,16 @@ function nativeTests() {
   heading('native: build (setup.mjs --native)');
   if (run(process.execPath, [join(root, 'scripts', 'setup.mjs'), '--native']) !== 0) return false;
   heading('native: core_tests');
-  return googleTest('core_tests', join(root, 'build', 'native', 'core_tests'), []);
+  const core = googleTest('core_tests', join(root, 'build', 'native', 'core_tests'), []);
+  // Creasing against OpenSubdiv (Debian's libosd-dev, which set-up installs).
+  heading('native: osd_tests');
+  const osd = join(root, 'build', 'native', 'osd_tests');
+  if (!existsSync(osd)) {
+    console.error('osd_tests was not built: is libosd-dev installed (node scripts/setup.mjs)?');
+    count(1, 0, 1);
+    return false;
+  }
+  return googleTest('osd_tests', osd, []) && core;
 }
 
 /** tests/core again as wasm32 (32-bit size_t and pointers, dlmalloc), under Node. */

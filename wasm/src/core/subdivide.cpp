@@ -38,6 +38,7 @@
 #include "mesh_build.h"
 #include "mesh_check.h"
 #include "quad_triangle_3.h"
+#include "refine/crease.h"
 #include "refine/dual_hosts.h"
 #include "refine/dual_masks.h"
 #include "refine/dual_points.h"
@@ -363,14 +364,17 @@ Status run_fast_steps(refine::Level& parent, Counts counts, double marks,
   return Status::success();
 }
 
-/// The primal hosts (`mask` from refine::primal_mask).
+/// The primal hosts (`mask` from refine::primal_mask); with OpenSubdiv's
+/// creasing when level 0 is creased (apply_tags).
 Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
                         const refine::Primal_mask& mask,
+                        const refine::Creasing& creasing,
                         const Subdivide_options& options,
                         const Mesh_buffers& in, double input, Mesh_buffers& out,
                         int& level) {
   refine::Primal_scratch scratch;
-  return run_fast_steps(
+  refine::Crease_scratch crease_scratch;
+  const Status s = run_fast_steps(
       parent, counts, marks, options, in, input, out, level,
       [&](const refine::Level& p, refine::Level& c, int, bool last) {
         const std::uint32_t uncovered =
@@ -381,10 +385,35 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
           refine::refine_pqq_topology(p, c, last);
         else
           refine::refine_ptq_topology(p, c, last);
+        if (p.creased) refine::refine_crease_tables(p, creasing, mask.pqq, c);
         refine::refine_primal_points(p, mask, scratch, c);
+        if (p.creased)
+          refine::apply_crease_rules(p, creasing, crease_scratch, c);
         return Status::success();
       },
-      [&] { scratch = refine::Primal_scratch(); });
+      [&] {
+        scratch = refine::Primal_scratch();
+        crease_scratch = refine::Crease_scratch();
+      });
+  // level_to_buffers took the positions and faces; the crease tables and
+  // halfedge targets are still there.
+  if (s.ok() && parent.creased)
+    out.tags = refine::crease_tags(parent, creasing, in.tags);
+  return s;
+}
+
+/// Whether a run applies OpenSubdiv's creasing: Catmull-Clark or Loop on
+/// a mesh with tags, or with a border mode other than CGAL's; `creasing`
+/// gets the tags' options overridden by the run's.
+bool creasing_of(const Mesh_buffers& in, const Subdivide_options& options,
+                 refine::Creasing& creasing) {
+  if (options.scheme != "catmull-clark" && options.scheme != "loop")
+    return false;
+  creasing.method = options.crease_method.value_or(in.tags.crease_method);
+  creasing.boundary = options.boundary.value_or(in.tags.boundary);
+  return !in.tags.crease_edges.empty() || !in.tags.corner_vertices.empty() ||
+         !in.tags.holes.empty() ||
+         creasing.boundary != Boundary_interpolation::edge_only;
 }
 
 /// The DQQ host (`mask` from refine::dual_mask).
@@ -584,12 +613,21 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       Counts counts;
       double marks = 0;
       Status s = prepare_level(in, options, level0, counts, marks);
+      refine::Creasing creasing;
+      if (s.ok() && fast.ok && creasing_of(in, options, creasing)) {
+        const bool triangulated = level0.face_count != in.face_count();
+        const std::string why =
+            refine::apply_tags(in, in.tags, creasing, triangulated, level0);
+        if (!why.empty())
+          s = Status::error(Status_code::invalid_argument,
+                            "The mesh's tags do not fit it: " + why + ".");
+      }
       // Refuse at once a run whose later level would not fit.
       Run_prediction run;
       if (s.ok()) s = predict_run(options, counts, input, marks, true, run);
       if (s.ok() && fast.ok)
-        s = run_primal_steps(level0, counts, marks, fast.mask, options, in,
-                             input, result.value, level);
+        s = run_primal_steps(level0, counts, marks, fast.mask, creasing,
+                             options, in, input, result.value, level);
       else if (s.ok() && sqrt3.ok)
         s = run_sqrt3_steps(level0, counts, sqrt3.mask, options, in, input,
                             result.value, level);

@@ -60,10 +60,12 @@ inline std::uint32_t second_half(std::uint32_t x, std::uint32_t E) {
 
 /// What a host builds for a child: every table when it will be refined
 /// again; for the last level only what its buffers need, the face vertices
-/// and, when edges are marked, the marked edges' ends.
+/// and, when edges are marked, the marked edges' ends, or when the run is
+/// creased the halfedge targets (its sharp edges' ends, crease.h).
 struct Parts {
   bool halfedges, targets;
-  explicit Parts(bool last) : halfedges(!last), targets(!last) {}
+  Parts(bool last, bool creased)
+      : halfedges(!last), targets(!last || creased) {}
 };
 
 /// Counts, halfedge targets of the split edges, border halves, marks:
@@ -279,7 +281,7 @@ struct Parent {
 void refine_pqq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
                       S = p.corner_count();
-  const Parts parts(last);
+  const Parts parts(last, p.creased);
   split_edges(p, c, 2 * E + S, 4 * std::size_t{S}, parts);
   c.vertex_count = V + E + F;
   c.face_count = S;
@@ -298,7 +300,7 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
 
 void refine_ptq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
-  const Parts parts(last);
+  const Parts parts(last, p.creased);
   split_edges(p, c, 2 * E + 3 * F, 12 * std::size_t{F}, parts);
   c.vertex_count = V + E;
   c.face_count = 4 * F;
@@ -322,7 +324,7 @@ std::uint32_t polygon_count(const Level& l) {
 void refine_pqt_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
                       S = p.corner_count(), Q = polygon_count(p);
-  const Parts parts(last);
+  const Parts parts(last, p.creased);
   split_edges(p, c, 2 * E + S, 4 * std::size_t{S}, parts);
   c.vertex_count = V + E + Q;
   c.face_count = F + S - Q;

@@ -24,8 +24,11 @@
 //                    halfedge into v (the border one on the border), where
 //                    CGAL's hosts start circulating around v
 //   edge_marks       per-edge data carried to both halves of a split edge
-//                    (control edges today; crease sharpness is its sibling);
-//                    the last level lists its marked edges' ends instead
+//                    (control edges); the last level lists its marked
+//                    edges' ends instead
+//   edge_sharpness   OpenSubdiv's creasing (crease.h): per edge, per
+//   vertex_sharpness vertex and per face, refined as the faces are
+//   face_holes
 #pragma once
 
 #include <algorithm>
@@ -66,6 +69,14 @@ struct Level {
   /// ends, source then target, in edge order (the output's control edges),
   /// so that this level needs neither marks nor halfedge targets.
   std::vector<std::uint32_t> marked_ends;
+  /// OpenSubdiv's creasing (crease.h), on the levels of a run that
+  /// applies a mesh's tags; false and the tables empty otherwise. A
+  /// sharpness per edge and per vertex (as the tags give them: the border
+  /// mode's sharpness is not stored), a hole flag per face. Such a run's
+  /// last level keeps its halfedge targets (its sharp edges' ends).
+  bool creased = false;
+  std::vector<float> edge_sharpness, vertex_sharpness;
+  std::vector<std::uint8_t> face_holes;
   std::vector<double> positions;  ///< x y z per vertex
 
   std::uint32_t corner_count() const {
