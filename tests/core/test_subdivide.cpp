@@ -1002,6 +1002,41 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
                     grid(30, 20, false, true), 0, 3});
   probes.push_back(
       {"quad-triangle", "tri torus 40x20 x3", torus(40, 20, true), 0, 3});
+  // Creased runs (OpenSubdiv's tags): a sharp first edge on every third
+  // face, a corner on every fifth vertex, a hole every 50th face; Chaikin
+  // on the triangles, the border mode none on the grid.
+  const auto creased = [](Mesh_buffers m, Crease_method method,
+                          Boundary_interpolation boundary) {
+    std::size_t o = 0;
+    for (std::uint32_t f = 0; f < m.face_count(); ++f) {
+      if (f % 3 == 0) {
+        m.tags.crease_edges.insert(m.tags.crease_edges.end(),
+                                   {m.face_indices[o], m.face_indices[o + 1]});
+        m.tags.crease_sharpness.push_back(0.5f + static_cast<float>(f % 4));
+      }
+      if (f % 50 == 0) m.tags.holes.push_back(f);
+      o += m.face_sizes[f];
+    }
+    for (std::uint32_t v = 0; v < m.vertex_count(); v += 5) {
+      m.tags.corner_vertices.push_back(v);
+      m.tags.corner_sharpness.push_back(1.5f);
+    }
+    m.tags.crease_method = method;
+    m.tags.boundary = boundary;
+    return m;
+  };
+  probes.push_back({"catmull-clark", "creased quad torus 160x80",
+                    creased(torus(160, 80, false), Crease_method::uniform,
+                            Boundary_interpolation::edge_only),
+                    0});
+  probes.push_back({"loop", "creased tri torus 40x20 x3",
+                    creased(torus(40, 20, true), Crease_method::chaikin,
+                            Boundary_interpolation::edge_only),
+                    0, 3});
+  probes.push_back({"catmull-clark", "creased quad grid 30x20 x3",
+                    creased(grid(30, 20, false), Crease_method::uniform,
+                            Boundary_interpolation::none),
+                    0, 3});
   for (const Probe& p : probes) {
     Subdivide_options o = options_for(p.scheme, p.levels, p.start_level);
     const Result<Size_prediction> predicted = predict_size(p.in, o);

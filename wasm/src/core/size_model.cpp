@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "refine/crease.h"
 #include "refine/dual_hosts.h"
 #include "refine/level_convert.h"
 #include "refine/primal_points.h"
@@ -358,6 +359,14 @@ double fast_step_peak(const std::string& scheme, bool face_sums,
         refine::primal_scratch_bytes(c.vertices, face_sums, border) +
         (scheme == "sqrt3" ? refine::sqrt3_scratch_bytes(c.faces, border) : 0);
   }
+  if (c.creased) {
+    // The crease tables of both levels, apply_crease_rules' vertex runs or
+    // Chaikin's sums, and the last level's halfedge targets.
+    scratch += refine::crease_level_bytes(c.vertices, c.edges, c.faces) +
+               refine::crease_level_bytes(n.vertices, n.edges, n.faces) +
+               refine::crease_scratch_bytes(c.vertices, c.edges) +
+               (last ? 8 * n.edges : 0);
+  }
   double peak = base + parent - freed + child + scratch;
   // Level 0 comes from the buffers (check_buffers' temporaries: 32 bytes
   // a corner, 8 a vertex, 4 a face; then the level beside the corners'
@@ -425,6 +434,7 @@ Step_need step_need(const Subdivide_options& options, const Counts& c,
   const std::string scheme = size_model(options);
   Step_need need;
   need.after = next_counts(scheme, c, global_step);
+  need.after.creased = c.creased;
   need.caps_after = caps;
   double peak = 0;
   if (runs_on_fast_host(options)) {

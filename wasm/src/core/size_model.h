@@ -24,6 +24,9 @@ struct Counts {
   double degree_excess = 0;  ///< sum over faces of (degree - 3)
   /// Faces with two or more border edges (sqrt3's border step needs none).
   double multi_border_faces = 0;
+  /// The run applies OpenSubdiv's creasing (refine/crease.h): its levels
+  /// carry crease tables.
+  bool creased = false;
 
   double degree_sum() const { return 2 * edges - border_edges; }
 };

@@ -573,6 +573,9 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
         buffers_bytes(static_cast<double>(in.vertex_count()),
                       static_cast<double>(in.face_count()),
                       static_cast<double>(in.face_indices.size()));
+    refine::Creasing creasing;
+    c.creased =
+        runs_on_fast_host(options) && creasing_of(in, options, creasing);
     Run_prediction run;
     predict_run(options, c, input, marks, false, run);
     c = run.after;
@@ -621,6 +624,7 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
         if (!why.empty())
           s = Status::error(Status_code::invalid_argument,
                             "The mesh's tags do not fit it: " + why + ".");
+        counts.creased = true;
       }
       // Refuse at once a run whose later level would not fit.
       Run_prediction run;

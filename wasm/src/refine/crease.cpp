@@ -366,11 +366,14 @@ Mesh_tags crease_tags(const Level& l, const Creasing& creasing,
   return tags;
 }
 
-double crease_bytes(double vertices, double edges, double faces) {
-  // Sharpness per edge and vertex, hole flags; the vertex runs of
-  // apply_crease_rules and Chaikin's sums; the last level's targets.
-  return 4 * edges + 4 * vertices + faces + (4 * vertices + 8 * edges) +
-         12 * vertices + 8 * edges;
+double crease_level_bytes(double vertices, double edges, double faces) {
+  return 4 * edges + 4 * vertices + faces;
+}
+
+double crease_scratch_bytes(double vertices, double edges) {
+  // The larger of apply_crease_rules' vertex runs and Chaikin's sums,
+  // counts and valences.
+  return std::max(4 * (vertices + 1) + 8 * edges, 12 * vertices);
 }
 
 }  // namespace refine

@@ -85,9 +85,10 @@ void apply_crease_rules(const Level& parent, const Creasing& creasing,
 Mesh_tags crease_tags(const Level& level, const Creasing& creasing,
                       const Mesh_tags& input);
 
-/// Bytes of a level's crease tables and of a step's scratch (the
-/// memory model's share of a tagged run).
-double crease_bytes(double vertices, double edges, double faces);
+/// Bytes of a level's crease tables, and of a step's scratch beside them
+/// (the memory model's share of a creased run).
+double crease_level_bytes(double vertices, double edges, double faces);
+double crease_scratch_bytes(double vertices, double edges);
 
 }  // namespace refine
 }  // namespace subdivlab
