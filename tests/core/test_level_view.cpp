@@ -179,6 +179,45 @@ TEST(RenderBuffers, CubeIsTwelveTrianglesAndTwelveEdges) {
   EXPECT_GE(r.out.bounding_sphere[3], std::sqrt(3.0f));
 }
 
+TEST(RenderBuffers, HolesAreNotDrawnButTheirEdgesCount) {
+  // The cube with faces 1 and 4 as holes: 4 faces drawn, 8 triangles;
+  // each of the 12 edges borders a drawn face, so all are drawn and
+  // counted.
+  Mesh_buffers cube = load("cube.off");
+  cube.tags.holes = {1, 4};
+  Recorder r;
+  EXPECT_EQ(build_render_buffers(cube, r, 12), 12u);
+  EXPECT_EQ(r.out.triangle_face,
+            (std::vector<std::uint32_t>{0, 0, 2, 2, 3, 3, 5, 5}));
+  EXPECT_EQ(r.out.triangles.size(), 24u);
+  EXPECT_EQ(r.out.edges.size(), 24u);
+  // Faces 1 and 4 no longer in any triangle: drawn triangles are those of
+  // faces 0, 2, 3 and 5, fanned as without holes.
+  const Render_buffers all = render_buffers(load("cube.off"));
+  for (std::size_t t = 0, drawn = 0; t < all.triangle_face.size(); ++t) {
+    if (all.triangle_face[t] == 1 || all.triangle_face[t] == 4) continue;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(r.out.triangles[3 * drawn + c], all.triangles[3 * t + c]);
+    ++drawn;
+  }
+  // A strip of three quads with the middle one a hole: the edge the
+  // middle quad shares with nothing else drawn (its top and bottom) goes;
+  // the mesh still has 10 edges.
+  Mesh_buffers strip;
+  strip.positions = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0,
+                     0, 1, 0, 1, 1, 0, 2, 1, 0, 3, 1, 0};
+  strip.face_sizes = {4, 4, 4};
+  strip.face_indices = {0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6};
+  strip.tags.holes = {1};
+  Recorder s;
+  EXPECT_EQ(build_render_buffers(strip, s), 10u);
+  EXPECT_EQ(s.out.edges, (std::vector<std::uint32_t>{0, 1, 0, 4, 1, 5, 2, 3, 2,
+                                                     6, 3, 7, 4, 5, 6, 7}));
+  EXPECT_EQ(s.out.triangle_face, (std::vector<std::uint32_t>{0, 0, 2, 2}));
+  // Vertex normals from the drawn faces only: all +z (flat strip).
+  for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(s.out.normals[3 * v + 2], 1.0f);
+}
+
 TEST(RenderBuffers, FansAPolygonFromItsFirstCorner) {
   Mesh_buffers pentagon;
   pentagon.positions = {1, 0,    0,    0.3, 0.95, 0,     -0.8, 0.6,

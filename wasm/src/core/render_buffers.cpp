@@ -16,6 +16,21 @@ namespace {
 /// Marks a corner whose edge an earlier corner gave.
 constexpr std::uint32_t kNoEdge = 0xffffffffu;
 
+/// The faces drawn: all of a mesh's, or those that are not holes
+/// (Mesh_tags::holes), with the index each had in the mesh.
+struct Faces {
+  const std::vector<std::uint32_t>& sizes;
+  const std::vector<std::uint32_t>& indices;
+  const std::vector<std::uint32_t>* original = nullptr;  ///< null: all
+
+  explicit Faces(const Mesh_buffers& mesh)
+      : sizes(mesh.face_sizes), indices(mesh.face_indices) {}
+  Faces(const std::vector<std::uint32_t>& s,
+        const std::vector<std::uint32_t>& i,
+        const std::vector<std::uint32_t>& o)
+      : sizes(s), indices(i), original(&o) {}
+};
+
 /// Centre of the bounding box and the largest distance from it (empty: a
 /// zero sphere), the radius rounded up so that the float sphere holds
 /// every point.
@@ -42,17 +57,17 @@ std::vector<float> bounding_sphere(const Mesh_buffers& mesh) {
           static_cast<float>(std::sqrt(r2) * (1 + 1e-6))};
 }
 
-std::size_t fan_triangle_count(const Mesh_buffers& mesh) {
+std::size_t fan_triangle_count(const Faces& faces) {
   std::size_t count = 0;
-  for (std::uint32_t size : mesh.face_sizes) count += size - 2;
+  for (std::uint32_t size : faces.sizes) count += size - 2;
   return count;
 }
 
-void fan_triangles(const Mesh_buffers& mesh, std::vector<std::uint32_t>& out) {
-  out.resize(3 * fan_triangle_count(mesh));
+void fan_triangles(const Faces& faces, std::vector<std::uint32_t>& out) {
+  out.resize(3 * fan_triangle_count(faces));
   std::uint32_t* t = out.data();
-  const std::uint32_t* corner = mesh.face_indices.data();
-  for (std::uint32_t size : mesh.face_sizes) {
+  const std::uint32_t* corner = faces.indices.data();
+  for (std::uint32_t size : faces.sizes) {
     for (std::uint32_t k = 1; k + 1 < size; ++k) {
       *t++ = corner[0];
       *t++ = corner[k];
@@ -62,25 +77,28 @@ void fan_triangles(const Mesh_buffers& mesh, std::vector<std::uint32_t>& out) {
   }
 }
 
-void triangle_faces(const Mesh_buffers& mesh, std::vector<std::uint32_t>& out) {
-  out.resize(fan_triangle_count(mesh));
+void triangle_faces(const Faces& faces, std::vector<std::uint32_t>& out) {
+  out.resize(fan_triangle_count(faces));
   std::uint32_t* t = out.data();
-  const std::uint32_t faces = static_cast<std::uint32_t>(mesh.face_count());
-  for (std::uint32_t f = 0; f < faces; ++f)
-    for (std::uint32_t k = 2; k < mesh.face_sizes[f]; ++k) *t++ = f;
+  const std::uint32_t count = static_cast<std::uint32_t>(faces.sizes.size());
+  for (std::uint32_t f = 0; f < count; ++f) {
+    const std::uint32_t face = faces.original ? (*faces.original)[f] : f;
+    for (std::uint32_t k = 2; k < faces.sizes[f]; ++k) *t++ = face;
+  }
 }
 
 /// Each triangle's normal (computed in double) summed in the float output,
 /// then normalized as three.js's Vector3.normalize does: a zero sum stays
 /// zero. (A double sum would double the memory the scatter touches, for
 /// nothing a picture shows.)
-void vertex_normals(const Mesh_buffers& mesh, std::vector<float>& out) {
+void vertex_normals(const Mesh_buffers& mesh, const Faces& faces,
+                    std::vector<float>& out) {
   const std::size_t n = mesh.vertex_count();
   out.assign(3 * n, 0.0f);
   float* sum = out.data();
   const double* p = mesh.positions.data();
-  const std::uint32_t* corner = mesh.face_indices.data();
-  for (std::uint32_t size : mesh.face_sizes) {
+  const std::uint32_t* corner = faces.indices.data();
+  for (std::uint32_t size : faces.sizes) {
     const std::uint32_t a = corner[0];
     for (std::uint32_t k = 1; k + 1 < size; ++k) {
       const std::uint32_t b = corner[k], c = corner[k + 1];
@@ -113,10 +131,10 @@ void vertex_normals(const Mesh_buffers& mesh, std::vector<float>& out) {
 /// Calls visit(a, b) for the edge from each corner a to the next one b,
 /// face by face.
 template <class Visit>
-void for_each_corner_edge(const Mesh_buffers& mesh, Visit&& visit) {
-  const std::uint32_t* fv = mesh.face_indices.data();
+void for_each_corner_edge(const Faces& faces, Visit&& visit) {
+  const std::uint32_t* fv = faces.indices.data();
   std::size_t at = 0;
-  for (std::uint32_t size : mesh.face_sizes) {
+  for (std::uint32_t size : faces.sizes) {
     for (std::uint32_t k = 0; k < size; ++k)
       visit(fv[at + k], fv[at + (k + 1 == size ? 0 : k + 1)]);
     at += size;
@@ -126,15 +144,15 @@ void for_each_corner_edge(const Mesh_buffers& mesh, Visit&& visit) {
 /// The edges of the corners that go from a smaller to a larger vertex, in
 /// corner order, when they are all `expected` edges (every edge of a closed
 /// mesh has one such corner, and one only); otherwise false, `out` unset.
-bool edges_going_up(const Mesh_buffers& mesh, std::size_t expected,
+bool edges_going_up(const Faces& faces, std::size_t expected,
                     std::vector<std::uint32_t>& out) {
   std::size_t up = 0;
   for_each_corner_edge(
-      mesh, [&up](std::uint32_t a, std::uint32_t b) { up += a < b; });
+      faces, [&up](std::uint32_t a, std::uint32_t b) { up += a < b; });
   if (up != expected) return false;
   out.resize(2 * up);
   std::uint32_t* e = out.data();
-  for_each_corner_edge(mesh, [&e](std::uint32_t a, std::uint32_t b) {
+  for_each_corner_edge(faces, [&e](std::uint32_t a, std::uint32_t b) {
     if (a >= b) return;
     *e++ = a;
     *e++ = b;
@@ -147,12 +165,11 @@ bool edges_going_up(const Mesh_buffers& mesh, std::size_t expected,
 /// sort, corner order kept in each bucket); a stamp per vertex says whether
 /// it was seen in the bucket at hand, so that a vertex of any valence costs
 /// one pass. Returns the number of edges.
-std::size_t polygon_edges(const Mesh_buffers& mesh,
+std::size_t polygon_edges(std::size_t n, const Faces& faces,
                           std::vector<std::uint32_t>& out) {
-  const std::size_t n = mesh.vertex_count();
   // Calls visit(lo, hi) for the edge from each corner to the next.
-  const auto each_corner_edge = [&mesh](auto&& visit) {
-    for_each_corner_edge(mesh, [&visit](std::uint32_t a, std::uint32_t b) {
+  const auto each_corner_edge = [&faces](auto&& visit) {
+    for_each_corner_edge(faces, [&visit](std::uint32_t a, std::uint32_t b) {
       visit(std::min(a, b), std::max(a, b));
     });
   };
@@ -161,7 +178,7 @@ std::size_t polygon_edges(const Mesh_buffers& mesh,
   std::vector<std::uint32_t> end(n + 1, 0);
   each_corner_edge([&end](std::uint32_t lo, std::uint32_t) { ++end[lo + 1]; });
   for (std::size_t v = 0; v < n; ++v) end[v + 1] += end[v];
-  std::vector<std::uint32_t> larger(mesh.face_indices.size());
+  std::vector<std::uint32_t> larger(faces.indices.size());
   each_corner_edge([&end, &larger](std::uint32_t lo, std::uint32_t hi) {
     larger[end[lo]++] = hi;
   });
@@ -201,26 +218,55 @@ std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
     sink.floats(Render_array::positions, positions);
   }
   sink.floats(Render_array::bounding_sphere, bounding_sphere(mesh));
+  // Holes shape their neighbours but are not drawn: the picture has the
+  // other faces, their normals and their edges (the count returned is
+  // still the mesh's).
+  std::vector<std::uint32_t> shown_sizes, shown_indices, original;
+  if (!mesh.tags.holes.empty()) {
+    std::vector<std::uint8_t> hole(mesh.face_count(), 0);
+    for (std::uint32_t f : mesh.tags.holes)
+      if (f < hole.size()) hole[f] = 1;
+    std::size_t o = 0;
+    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+      const std::uint32_t k = mesh.face_sizes[f];
+      if (hole[f] == 0) {
+        shown_sizes.push_back(k);
+        shown_indices.insert(shown_indices.end(), mesh.face_indices.begin() + o,
+                             mesh.face_indices.begin() + o + k);
+        original.push_back(f);
+      }
+      o += k;
+    }
+  }
+  const Faces all(mesh);
+  const Faces faces = mesh.tags.holes.empty()
+                          ? all
+                          : Faces(shown_sizes, shown_indices, original);
   {
     std::vector<float> normals;
-    vertex_normals(mesh, normals);
+    vertex_normals(mesh, faces, normals);
     sink.floats(Render_array::normals, normals);
   }
   {
     std::vector<std::uint32_t> triangles;
-    fan_triangles(mesh, triangles);
+    fan_triangles(faces, triangles);
     sink.indices(Render_array::triangles, triangles);
   }
   {
-    std::vector<std::uint32_t> faces;
-    triangle_faces(mesh, faces);
-    sink.indices(Render_array::triangle_face, faces);
+    std::vector<std::uint32_t> triangle_face;
+    triangle_faces(faces, triangle_face);
+    sink.indices(Render_array::triangle_face, triangle_face);
   }
   std::vector<std::uint32_t> edges;
-  const std::size_t count =
-      expected_edges > 0 && edges_going_up(mesh, expected_edges, edges)
-          ? expected_edges
-          : polygon_edges(mesh, edges);
+  std::size_t count = 0;
+  if (faces.original != nullptr) {
+    count = polygon_edges(mesh.vertex_count(), all, edges);
+    polygon_edges(mesh.vertex_count(), faces, edges);
+  } else {
+    count = expected_edges > 0 && edges_going_up(faces, expected_edges, edges)
+                ? expected_edges
+                : polygon_edges(mesh.vertex_count(), faces, edges);
+  }
   sink.indices(Render_array::edges, edges);
   return count;
 }

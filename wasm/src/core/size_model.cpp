@@ -457,7 +457,10 @@ Step_need step_need(const Subdivide_options& options, const Counts& c,
                     input_bytes + buffers_bytes(n.vertices, n.faces, corners) +
                         16 * marks +  // the result's control edges, 2 per mark
                         render_peak_bytes(n.vertices, n.edges, corners,
-                                          corners - 2 * n.faces));
+                                          corners - 2 * n.faces) +
+                        // A creased level may have holes: the faces drawn
+                        // are copied apart (render_buffers.cpp).
+                        (n.creased ? 8 * n.faces + 4 * corners : 0));
   }
   need.peak_bytes = peak * kSlackFactor + kSlackBytes;
   return need;
