@@ -152,5 +152,33 @@ TEST(Creasing, SharpnessDecaysByOnePerLevelInTheResultsTags) {
   }
 }
 
+// Where OpenSubdiv's rules and CGAL's differ on an untagged mesh: CGAL's
+// border rule moves a corner of a quad patch (one face, two border edges)
+// as any border vertex, 3/4 of it and 1/8 of each border neighbour;
+// OpenSubdiv's edge-and-corner mode pins it. The default (edge only)
+// follows CGAL.
+TEST(Creasing, EdgeAndCornerPinsThePatchCornersCgalMoves) {
+  const Mesh_buffers m = strip();
+  Subdivide_options options;
+  options.scheme = "catmull-clark";
+  const Result<Mesh_buffers> cgal = subdivide_mesh(m, options);
+  options.boundary = Boundary_interpolation::edge_and_corner;
+  const Result<Mesh_buffers> pinned = subdivide_mesh(m, options);
+  ASSERT_TRUE(cgal.ok() && pinned.ok());
+  // Vertex 0 at (0, 0, 0), border neighbours (1, 0, 0) and (0, 1, 0).
+  EXPECT_DOUBLE_EQ(cgal.value.positions[0], 0.125);
+  EXPECT_DOUBLE_EQ(cgal.value.positions[1], 0.125);
+  EXPECT_DOUBLE_EQ(pinned.value.positions[0], 0.0);
+  EXPECT_DOUBLE_EQ(pinned.value.positions[1], 0.0);
+  // Vertex 1 (1, 0, 0), on the border between the quads: the same in both.
+  for (int i = 3; i < 6; ++i)
+    EXPECT_DOUBLE_EQ(cgal.value.positions[i], pinned.value.positions[i]);
+  // The result says which mode made it.
+  EXPECT_TRUE(pinned.value.tags.boundary ==
+              Boundary_interpolation::edge_and_corner);
+  EXPECT_TRUE(pinned.value.tags.boundary_given);
+  EXPECT_TRUE(cgal.value.tags.empty());
+}
+
 }  // namespace
 }  // namespace subdivlab
