@@ -152,6 +152,28 @@ TEST(Creasing, SharpnessDecaysByOnePerLevelInTheResultsTags) {
   }
 }
 
+// No step: the mesh comes back as it is, tags included (renumbered past
+// a vertex no face uses, whose own tag goes).
+TEST(Creasing, NoStepKeepsTheTags) {
+  Mesh_buffers m = strip();
+  m.positions.insert(m.positions.begin(), {5, 5, 5});
+  for (std::uint32_t& v : m.face_indices) ++v;
+  m.tags.crease_edges = {2, 5};
+  m.tags.crease_sharpness = {2.5f};
+  m.tags.corner_vertices = {0, 6};
+  m.tags.corner_sharpness = {1.0f, 3.0f};
+  m.tags.holes = {1};
+  m.tags.crease_method = Crease_method::chaikin;
+  const Result<Mesh_buffers> r = run(m, "catmull-clark", 0);
+  ASSERT_TRUE(r.ok()) << r.status.message;
+  EXPECT_EQ(r.value.tags.crease_edges, (std::vector<std::uint32_t>{1, 4}));
+  EXPECT_EQ(r.value.tags.crease_sharpness, (std::vector<float>{2.5f}));
+  EXPECT_EQ(r.value.tags.corner_vertices, (std::vector<std::uint32_t>{5}));
+  EXPECT_EQ(r.value.tags.corner_sharpness, (std::vector<float>{3.0f}));
+  EXPECT_EQ(r.value.tags.holes, (std::vector<std::uint32_t>{1}));
+  EXPECT_TRUE(r.value.tags.crease_method == Crease_method::chaikin);
+}
+
 // Where OpenSubdiv's rules and CGAL's differ on an untagged mesh: CGAL's
 // border rule moves a corner of a quad patch (one face, two border edges)
 // as any border vertex, 3/4 of it and 1/8 of each border neighbour;

@@ -402,6 +402,43 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
   return s;
 }
 
+/// The tags of `in` for `mesh`, which is `in` as built for no step: the
+/// vertices no face uses dropped (tags renumbered past them); none when it
+/// had to be triangulated (its faces, which holes name, changed).
+Mesh_tags unchanged_mesh_tags(const Mesh_buffers& in, const Mesh& mesh) {
+  if (mesh.number_of_faces() != in.face_count()) return {};
+  Mesh_tags tags = in.tags;
+  if (mesh.number_of_vertices() == in.vertex_count()) return tags;
+  std::vector<std::uint32_t> rank(in.vertex_count(), refine::kNone);
+  for (std::uint32_t v : in.face_indices) rank[v] = 0;
+  std::uint32_t used = 0;
+  for (std::uint32_t& r : rank)
+    if (r == 0) r = used++;
+  // A tag on a vertex no face uses has nothing to apply to: dropped.
+  const auto at = [&](std::uint32_t v) {
+    return v < rank.size() ? rank[v] : refine::kNone;
+  };
+  Mesh_tags out = tags;
+  out.crease_edges.clear();
+  out.crease_sharpness.clear();
+  out.corner_vertices.clear();
+  out.corner_sharpness.clear();
+  for (std::size_t i = 0; i < tags.crease_sharpness.size(); ++i) {
+    const std::uint32_t a = at(tags.crease_edges[2 * i]),
+                        b = at(tags.crease_edges[2 * i + 1]);
+    if (a == refine::kNone || b == refine::kNone) continue;
+    out.crease_edges.insert(out.crease_edges.end(), {a, b});
+    out.crease_sharpness.push_back(tags.crease_sharpness[i]);
+  }
+  for (std::size_t i = 0; i < tags.corner_sharpness.size(); ++i) {
+    const std::uint32_t v = at(tags.corner_vertices[i]);
+    if (v == refine::kNone) continue;
+    out.corner_vertices.push_back(v);
+    out.corner_sharpness.push_back(tags.corner_sharpness[i]);
+  }
+  return out;
+}
+
 /// Whether a run applies OpenSubdiv's creasing: Catmull-Clark or Loop on
 /// a mesh with tags, or with a border mode other than CGAL's; `creasing`
 /// gets the tags' options overridden by the run's.
@@ -689,6 +726,7 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
     result.value = to_buffers(mesh);
     if (track)
       result.value.control_edges = control_edges_to_buffers(mesh, control);
+    if (options.levels == 0) result.value.tags = unchanged_mesh_tags(in, mesh);
   } catch (const CGAL::Failure_exception& e) {
     result.status =
         Status::error(Status_code::internal_error,
