@@ -183,12 +183,25 @@ describe('bad tags', () => {
     const names = ['crease', 'corner', 'hole', 'interpolateboundary', 'creasemethod', 'smoothtriangles', 'x'];
     const counts = ['2/1/0', '4/1/0', '1/1/0', '1/0/0', '0/0/1', '3/1/0', '2/0/0', '1/1', 'a/b/c'];
     const values = ['0', '1', '2', '3', '5', '7', '8', '-1', '0.5', '10', 'nan', '1e39', 'x', 'chaikin', 'normal'];
+    const ints = ['0', '1', '2', '3', '4', '5', '7', '9', '-1', 'x'];
+    const floats = ['0', '0.5', '2', '10', '-1', 'inf'];
+    const strings = ['chaikin', 'normal', 'smooth'];
     let accepted = 0;
     let refused = 0;
     for (let i = 0; i < 400; i++) {
-      const words = ['t', pick(names), pick(counts)];
-      const n = Math.floor(random() * 5);
-      for (let k = 0; k < n; k++) words.push(pick(values));
+      const words = ['t', pick(names)];
+      if (i % 2 === 0) {
+        // Counts that match the values: mostly well formed.
+        const n = [0, 1, 2].map(() => Math.floor(random() * 3));
+        words.push(n.join('/'));
+        for (let k = 0; k < n[0]; k++) words.push(pick(ints));
+        for (let k = 0; k < n[1]; k++) words.push(pick(floats));
+        for (let k = 0; k < n[2]; k++) words.push(pick(strings));
+      } else {
+        words.push(pick(counts));
+        const n = Math.floor(random() * 5);
+        for (let k = 0; k < n; k++) words.push(pick(values));
+      }
       const line = words.join(' ');
       try {
         parseMesh(`${CUBE_OBJ}${line}\n# end\n`, 'obj');
