@@ -78,7 +78,6 @@ class Line_reader {
           line_begin_ = q + 1;
           cursor_ = skip_blanks(q + 1);
           line = line_;
-          at_tag_comment_ = true;
           return true;
         }
         pos_ = after_line(q);
@@ -87,7 +86,6 @@ class Line_reader {
       line_begin_ = p;
       cursor_ = q;
       line = line_;
-      at_tag_comment_ = false;
       return true;
     }
     return false;
@@ -99,8 +97,12 @@ class Line_reader {
   /// From now on a comment "# t ..." is a line of its own (OFF's tags, the
   /// OBJ tag syntax after "# "); other comments stay comments.
   void read_tag_comments() { tag_comments_ = true; }
-  /// Whether the current line is such a comment.
-  bool at_tag_comment() const { return at_tag_comment_; }
+  /// Whether the current line is such a comment: it is read from after a
+  /// '#', where any other line starts at a line's beginning (found without
+  /// a flag to set on every line of the fast path).
+  bool at_tag_comment() const {
+    return line_begin_ != begin_ && line_begin_[-1] == '#';
+  }
 
   /// Ends the current line at `p` if only blanks and a comment follow;
   /// false (nothing consumed) otherwise.
@@ -174,7 +176,6 @@ class Line_reader {
   const char* line_begin_ = nullptr;
   const char* cursor_ = nullptr;
   bool tag_comments_ = false;
-  bool at_tag_comment_ = false;
 };
 
 enum class Number { ok, not_number, not_finite };
