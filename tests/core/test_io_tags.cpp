@@ -202,6 +202,15 @@ TEST(IoTags, UnappliedTagsAreNotedWithTheirLine) {
   EXPECT_TRUE(t.present());
 }
 
+TEST(IoTags, ManyUnappliedTagsGiveAHundredNotesAndOneLineForTheRest) {
+  std::string text = cube_obj;
+  for (int i = 0; i < 250; ++i) text += "t smoothtriangles 1/0/0 1\n";
+  const Mesh_tags t = tags_of(text, Mesh_format::obj);
+  ASSERT_EQ(t.notes.size(), 101u);
+  EXPECT_EQ(t.notes[99], "line 114: tag 'smoothtriangles' is not applied");
+  EXPECT_EQ(t.notes[100], "and 150 more tags that are not applied");
+}
+
 TEST(IoTags, TheFixturesHoldWhatTheirCommentsSay) {
   const Mesh_tags cube = tags_of(fixture("cube-creased.obj"), Mesh_format::obj);
   EXPECT_EQ(cube.crease_edges, (Indices{4, 5, 5, 7, 0, 1, 1, 3}));

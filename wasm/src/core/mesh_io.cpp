@@ -543,7 +543,13 @@ struct Tag_line {
 struct Tag_list {
   std::vector<Tag_line> lines;
   std::vector<std::string> notes;
+  /// Tags not applied, noted or not: a note each for the first
+  /// max_unapplied_notes, then one line for the rest (a file of a million
+  /// such lines must not become a million messages).
+  std::size_t unapplied = 0;
 };
+
+constexpr std::size_t max_unapplied_notes = 100;
 
 std::string plural(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
@@ -646,7 +652,8 @@ bool read_tag(const std::vector<std::string_view>& tok, int line,
       if (parse_double(floats[i], v) == Number::not_number)
         return fail(tag + ": " + quoted(floats[i]) + " is not a number");
     }
-    tags.notes.push_back(at(line) + tag + " is not applied");
+    if (tags.unapplied++ < max_unapplied_notes)
+      tags.notes.push_back(at(line) + tag + " is not applied");
     return true;
   }
 
@@ -735,6 +742,11 @@ bool read_tag(const std::vector<std::string_view>& tok, int line,
 bool apply_tags(Tag_list&& tags, Mesh_buffers& mesh, Result<Mesh_buffers>& r) {
   Mesh_tags& out = mesh.tags;
   out.notes = std::move(tags.notes);
+  if (tags.unapplied > max_unapplied_notes) {
+    out.notes.push_back("and " +
+                        std::to_string(tags.unapplied - max_unapplied_notes) +
+                        " more tags that are not applied");
+  }
   if (tags.lines.empty()) return true;
   const std::size_t nv = mesh.vertex_count(), nf = mesh.face_count();
   const auto key = [](std::uint64_t a, std::uint64_t b) {

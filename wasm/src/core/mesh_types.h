@@ -62,8 +62,9 @@ struct Mesh_tags {
   /// The file had a creasemethod tag (written back on export).
   bool crease_method_given = false;
   /// One line per well-formed tag the product does not apply
-  /// ("line 12: tag 'smoothtriangles' is not applied") or tag value it
-  /// dropped, for the user; never written back and no part of a result.
+  /// ("line 12: tag 'smoothtriangles' is not applied"; after 100 of them
+  /// one line counts the rest) or corner it dropped with its unused vertex,
+  /// for the user; never written back and no part of a result.
   std::vector<std::string> notes;
 
   /// Nothing that changes a result: no crease, corner or hole, and the
