@@ -146,6 +146,69 @@ describe('subdiv CLI', () => {
     );
   });
 
+  it('info prints the facts, the tag counts, the border mode, the crease method and the notes', () => {
+    const r = subdiv(['info', fixture('cube-creased.obj')]);
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    expect(r.stdout).toBe(
+      [
+        'vertices: 8',
+        'edges: 12',
+        'faces: 6 (0 triangles, 6 quads, 0 other)',
+        'components: 1',
+        'boundaries: 0',
+        'genus: 0',
+        'closed: yes',
+        'creases: 4',
+        'corners: 1',
+        'holes: 0',
+        'boundary: edge (from the file)',
+        'crease method: uniform',
+        '',
+      ].join('\n'),
+    );
+    const noted = join(work, 'noted.obj');
+    writeFileSync(noted, `${readFileSync(fixture('tetra-crease.obj'), 'utf8')}t smoothtriangles 1/0/0 1\n`);
+    const n = subdiv(['info', noted]);
+    expect(n.status).toBe(0);
+    expect(n.stdout).toContain(
+      'creases: 1\ncorners: 0\nholes: 0\nboundary: edge\ncrease method: chaikin (from the file)\n',
+    );
+    expect(n.stdout.endsWith("note: line 13: tag 'smoothtriangles' is not applied\n")).toBe(true);
+    const holed = subdiv(['info', fixture('torus-holed.obj')]);
+    expect(holed.stdout).toContain('holes: 2\n');
+  });
+
+  it('info on a bad tag: exit 1 with the file and the line', () => {
+    const bad = join(work, 'bad-tag.obj');
+    writeFileSync(bad, `${readFileSync(fixture('tetra-crease.obj'), 'utf8')}t crease 2/1/0 0 9 1\n`);
+    const r = subdiv(['info', bad]);
+    expect(r.status).toBe(1);
+    expect(r.stdout).toBe('');
+    expect(r.stderr).toBe(
+      `error: ${bad}: line 13: tag 'crease': vertex 9 is out of range (4 vertices; tag indices start at 0)\n`,
+    );
+  });
+
+  it('--crease-method and --boundary are taken for subdividing', () => {
+    const r = subdiv([fixture('cube-creased.obj'), '--crease-method', 'chaikin', '--boundary', 'none', '--stats']);
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    expect(JSON.parse(r.stdout).faces).toBe(24);
+  });
+
+  it.each([
+    [['info']],
+    [['info', 'a.obj', 'b.obj']],
+    [['info', 'a.obj', '--levels', '2']],
+    [[fixture('cube.off'), '--crease-method', 'smooth']],
+    [[fixture('cube.off'), '--boundary', 'edges']],
+  ])('bad usage of the tag options and info %j: exit 2', (args) => {
+    const r = subdiv(args);
+    expect(r.status).toBe(2);
+    expect(r.stderr).toContain('usage: subdiv INPUT');
+  });
+
   it('--help prints the usage on stdout, exit 0', () => {
     const r = subdiv(['--help']);
     expect(r.status).toBe(0);

@@ -66,12 +66,83 @@ val to_js_array(const char* type, const std::vector<T>& values) {
       emscripten::typed_memory_view(values.size(), values.data()));
 }
 
+/// A JS value that cannot be converted (an unknown option or tag name):
+/// guarded() reports it as invalid_argument with its message.
+struct Bad_argument : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// How a value that is not one of the names is quoted in a message.
+std::string given_value(const val& v) {
+  if (v.isString()) return "\"" + v.as<std::string>() + "\"";
+  return "a " + v.typeOf().as<std::string>();
+}
+
+// The names of the tag enums in JS (web/core/mesh.ts).
+const char* boundary_name(Boundary_interpolation b) {
+  switch (b) {
+    case Boundary_interpolation::edge_only:
+      return "edge";
+    case Boundary_interpolation::edge_and_corner:
+      return "edge-and-corner";
+    case Boundary_interpolation::none:
+      return "none";
+  }
+  return "edge";
+}
+
+/// `what` names the value in the message ("Option boundary").
+Boundary_interpolation boundary_from_js(const val& v, const char* what) {
+  const std::string name = v.isString() ? v.as<std::string>() : "";
+  for (const auto b :
+       {Boundary_interpolation::edge_only,
+        Boundary_interpolation::edge_and_corner, Boundary_interpolation::none})
+    if (name == boundary_name(b)) return b;
+  throw Bad_argument(
+      std::string(what) +
+      " must be \"edge\", \"edge-and-corner\" or \"none\", not " +
+      given_value(v) + ".");
+}
+
+const char* crease_method_name(Crease_method m) {
+  return m == Crease_method::chaikin ? "chaikin" : "uniform";
+}
+
+Crease_method crease_method_from_js(const val& v, const char* what) {
+  const std::string name = v.isString() ? v.as<std::string>() : "";
+  if (name == "uniform") return Crease_method::uniform;
+  if (name == "chaikin") return Crease_method::chaikin;
+  throw Bad_argument(std::string(what) +
+                     " must be \"uniform\" or \"chaikin\", not " +
+                     given_value(v) + ".");
+}
+
+val to_js_tags(const Mesh_tags& tags) {
+  val out = val::object();
+  out.set("creaseEdges", to_js_array("Uint32Array", tags.crease_edges));
+  out.set("creaseSharpness",
+          to_js_array("Float32Array", tags.crease_sharpness));
+  out.set("cornerVertices", to_js_array("Uint32Array", tags.corner_vertices));
+  out.set("cornerSharpness",
+          to_js_array("Float32Array", tags.corner_sharpness));
+  out.set("holes", to_js_array("Uint32Array", tags.holes));
+  out.set("boundary", std::string(boundary_name(tags.boundary)));
+  out.set("boundaryGiven", tags.boundary_given);
+  out.set("creaseMethod", std::string(crease_method_name(tags.crease_method)));
+  out.set("creaseMethodGiven", tags.crease_method_given);
+  val notes = val::array();
+  for (const std::string& note : tags.notes) notes.call<void>("push", note);
+  out.set("notes", notes);
+  return out;
+}
+
 val to_js_mesh(const Mesh_buffers& mesh) {
   val out = val::object();
   out.set("positions", to_js_array("Float64Array", mesh.positions));
   out.set("faceSizes", to_js_array("Uint32Array", mesh.face_sizes));
   out.set("faceIndices", to_js_array("Uint32Array", mesh.face_indices));
   out.set("controlEdges", to_js_array("Uint32Array", mesh.control_edges));
+  if (mesh.tags.present()) out.set("tags", to_js_tags(mesh.tags));
   return out;
 }
 
@@ -82,12 +153,34 @@ std::vector<T> from_js_array(const val& mesh, const char* key) {
   return emscripten::convertJSArrayToNumberVector<T>(array);
 }
 
+Mesh_tags from_js_tags(const val& js) {
+  Mesh_tags tags;
+  tags.crease_edges = from_js_array<std::uint32_t>(js, "creaseEdges");
+  tags.crease_sharpness = from_js_array<float>(js, "creaseSharpness");
+  tags.corner_vertices = from_js_array<std::uint32_t>(js, "cornerVertices");
+  tags.corner_sharpness = from_js_array<float>(js, "cornerSharpness");
+  tags.holes = from_js_array<std::uint32_t>(js, "holes");
+  const val boundary = js["boundary"];
+  if (!boundary.isUndefined())
+    tags.boundary = boundary_from_js(boundary, "Mesh tags' boundary");
+  tags.boundary_given = js["boundaryGiven"].isTrue();
+  const val method = js["creaseMethod"];
+  if (!method.isUndefined())
+    tags.crease_method =
+        crease_method_from_js(method, "Mesh tags' creaseMethod");
+  tags.crease_method_given = js["creaseMethodGiven"].isTrue();
+  // Notes are the reader's words to the user; they do not go back in.
+  return tags;
+}
+
 Mesh_buffers from_js_mesh(const val& mesh) {
   Mesh_buffers out;
   out.positions = from_js_array<double>(mesh, "positions");
   out.face_sizes = from_js_array<std::uint32_t>(mesh, "faceSizes");
   out.face_indices = from_js_array<std::uint32_t>(mesh, "faceIndices");
   out.control_edges = from_js_array<std::uint32_t>(mesh, "controlEdges");
+  const val tags = mesh["tags"];
+  if (!tags.isUndefined() && !tags.isNull()) out.tags = from_js_tags(tags);
   return out;
 }
 
@@ -243,7 +336,7 @@ Status from_js_rules(const val& js, Custom_rules& rules) {
 }
 
 /// Reads { scheme, levels, startLevel, triangulate, memoryLimitBytes,
-/// smoothBoundary, rules, renderBuffers }.
+/// smoothBoundary, creaseMethod, boundary, rules, renderBuffers }.
 Status from_js_options(const val& js, Subdivide_options& options) {
   if (!js.isUndefined() && !js.isNull()) {
     const val scheme = js["scheme"];
@@ -280,6 +373,13 @@ Status from_js_options(const val& js, Subdivide_options& options) {
     if (!render.isUndefined()) options.render_buffers = render.as<bool>();
     const val smooth = js["smoothBoundary"];
     if (!smooth.isUndefined()) options.smooth_boundary = smooth.as<bool>();
+    const val method = js["creaseMethod"];
+    if (!method.isUndefined())
+      options.crease_method =
+          crease_method_from_js(method, "Option creaseMethod");
+    const val boundary = js["boundary"];
+    if (!boundary.isUndefined())
+      options.boundary = boundary_from_js(boundary, "Option boundary");
     const val rules = js["rules"];
     if (!rules.isUndefined() && !rules.isNull()) {
       const Status s = from_js_rules(rules, options.custom);
@@ -313,6 +413,8 @@ template <class Body>
 val guarded(Body body) {
   try {
     return body();
+  } catch (const Bad_argument& e) {
+    return to_js_status(Status::error(Status_code::invalid_argument, e.what()));
   } catch (const std::bad_alloc&) {
     return to_js_status(Status::error(
         Status_code::too_large,

@@ -1,9 +1,10 @@
 import { parseArgs } from 'node:util';
-import type { MeshFormat } from '../core/mesh';
+import type { BoundaryInterpolation, CreaseMethod, MeshFormat } from '../core/mesh';
 
 /** The usage text printed by --help and on bad usage. */
 export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|OUTPUT.obj] [--stats]
-              [--rule RULES.json] [--fixed-boundary]
+              [--rule RULES.json] [--fixed-boundary] [--crease-method M] [--boundary B]
+       subdiv info INPUT
 
   INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
   --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
@@ -14,16 +15,25 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
   --rule F         the rule set of --scheme custom, a JSON file (see public/rules/); implies
                    --scheme custom
   --fixed-boundary quad-triangle: keep border vertices on the control border polygon
+  --crease-method M  uniform or chaikin: how semi-sharp creases decay (overrides the file's
+                   t creasemethod tag)
+  --boundary B     edge, edge-and-corner or none: how a tagged mesh's border is subdivided
+                   (overrides the file's t interpolateboundary tag)
   -o, --output F   write the result to F, as OFF or OBJ by its extension
   --stats          print the result's facts and the subdivision time as one JSON object
                    (with controlEdges, the marked control-mesh edges, for primal schemes)
   -h, --help       show this text
+
+subdiv info INPUT prints the mesh's facts and its OpenSubdiv tags (creases, corners, holes,
+border mode, crease method) with the notes on tags it does not apply.
 
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
 
 /** A command line that made sense. */
 export interface CliArgs {
+  /** `subdiv info INPUT` or the default, subdividing. */
+  command: 'subdivide' | 'info';
   input: string;
   scheme: string;
   levels: number;
@@ -32,6 +42,10 @@ export interface CliArgs {
   rule: string | null;
   /** --fixed-boundary. */
   fixedBoundary: boolean;
+  /** --crease-method, or null for the mesh's own. */
+  creaseMethod: CreaseMethod | null;
+  /** --boundary, or null for the mesh's own. */
+  boundary: BoundaryInterpolation | null;
   output: { path: string; format: MeshFormat } | null;
   stats: boolean;
   help: boolean;
@@ -63,19 +77,31 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const help = values.help === true;
   if (help) {
     return {
+      command: 'subdivide',
       input: '',
       scheme: '',
       levels: 0,
       triangulate: false,
       rule: null,
       fixedBoundary: false,
+      creaseMethod: null,
+      boundary: null,
       output: null,
       stats: false,
       help,
     };
   }
+  if (positionals[0] === 'info') return infoArgs(parsed);
   if (positionals.length !== 1) {
     throw new UsageError(positionals.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
+  }
+  const creaseMethod = values['crease-method'] ?? null;
+  if (creaseMethod !== null && !CREASE_METHODS.includes(creaseMethod as CreaseMethod)) {
+    throw new UsageError(`--crease-method must be uniform or chaikin, not "${creaseMethod}"`);
+  }
+  const boundary = values.boundary ?? null;
+  if (boundary !== null && !BOUNDARIES.includes(boundary as BoundaryInterpolation)) {
+    throw new UsageError(`--boundary must be edge, edge-and-corner or none, not "${boundary}"`);
   }
   const levelsText = values.levels ?? '1';
   if (!/^\d+$/.test(levelsText)) throw new UsageError(`--levels must be an integer 0 or more, not "${levelsText}"`);
@@ -87,15 +113,42 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const scheme = values.scheme ?? (rule !== null ? 'custom' : 'catmull-clark');
   if (scheme === 'custom' && rule === null) throw new UsageError('--scheme custom needs --rule FILE.json');
   return {
+    command: 'subdivide',
     input: positionals[0],
     scheme,
     levels,
     triangulate: values.triangulate === true,
     rule,
     fixedBoundary: values['fixed-boundary'] === true,
+    creaseMethod: creaseMethod as CreaseMethod | null,
+    boundary: boundary as BoundaryInterpolation | null,
     output: values.output === undefined ? null : { path: values.output, format: outputFormat(values.output) },
     stats: values.stats === true,
     help,
+  };
+}
+
+const CREASE_METHODS: CreaseMethod[] = ['uniform', 'chaikin'];
+const BOUNDARIES: BoundaryInterpolation[] = ['edge', 'edge-and-corner', 'none'];
+
+/** `subdiv info INPUT`: one file and no options (they are subdividing's). */
+function infoArgs({ values, positionals }: ReturnType<typeof parse>): CliArgs {
+  if (positionals.length !== 2) throw new UsageError('subdiv info takes exactly one INPUT file');
+  const given = Object.keys(values);
+  if (given.length > 0) throw new UsageError(`subdiv info takes no options, not --${given[0]}`);
+  return {
+    command: 'info',
+    input: positionals[1],
+    scheme: 'catmull-clark',
+    levels: 0,
+    triangulate: false,
+    rule: null,
+    fixedBoundary: false,
+    creaseMethod: null,
+    boundary: null,
+    output: null,
+    stats: false,
+    help: false,
   };
 }
 
@@ -110,6 +163,8 @@ function parse(argv: string[]) {
       triangulate: { type: 'boolean' },
       rule: { type: 'string' },
       'fixed-boundary': { type: 'boolean' },
+      'crease-method': { type: 'string' },
+      boundary: { type: 'string' },
       output: { type: 'string', short: 'o' },
       stats: { type: 'boolean' },
       help: { type: 'boolean', short: 'h' },

@@ -6,7 +6,7 @@
 import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
-import type { Mesh, MeshFormat, SchemeName } from '../core/mesh';
+import type { Mesh, MeshFacts, MeshFormat, SchemeName } from '../core/mesh';
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
 import {
   formatFromFileName,
@@ -73,7 +73,45 @@ function writeMeshFile(path: string, mesh: Mesh, format: MeshFormat): void {
   }
 }
 
+/**
+ * What `subdiv info` prints: the facts of the loaded mesh, then its tags
+ * (counts, border mode, crease method; "(from the file)" where a tag set
+ * them) and the notes on tags the core read but does not apply.
+ */
+export function infoText(mesh: Mesh, facts: MeshFacts): string {
+  const tags = mesh.tags;
+  const lines = [
+    `vertices: ${facts.vertices}`,
+    `edges: ${facts.edges}`,
+    `faces: ${facts.faces} (${facts.triangles} triangles, ${facts.quads} quads, ${facts.otherFaces} other)`,
+    `components: ${facts.components}`,
+    `boundaries: ${facts.boundaries}`,
+    `genus: ${facts.genus}`,
+    `closed: ${facts.closed ? 'yes' : 'no'}`,
+    `creases: ${tags ? tags.creaseSharpness.length : 0}`,
+    `corners: ${tags ? tags.cornerSharpness.length : 0}`,
+    `holes: ${tags ? tags.holes.length : 0}`,
+    `boundary: ${tags?.boundary ?? 'edge'}${tags?.boundaryGiven ? ' (from the file)' : ''}`,
+    `crease method: ${tags?.creaseMethod ?? 'uniform'}${tags?.creaseMethodGiven ? ' (from the file)' : ''}`,
+    ...(tags?.notes ?? []).map((note) => `note: ${note}`),
+  ];
+  return `${lines.join('\n')}\n`;
+}
+
+async function info(args: CliArgs, io: CliIo): Promise<void> {
+  await initNode();
+  const text = readInput(args.input);
+  try {
+    const mesh = parseMesh(text, inputFormat(args.input, text));
+    io.stdout(infoText(mesh, meshFacts(mesh)));
+  } catch (error) {
+    if (error instanceof SubdivError) throw new InputError(locate(args.input, error));
+    throw error;
+  }
+}
+
 async function run(args: CliArgs, io: CliIo): Promise<void> {
+  if (args.command === 'info') return info(args, io);
   await initNode();
   const schemes = schemeNames();
   if (!schemes.includes(args.scheme)) {
@@ -100,6 +138,8 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
       levels: args.levels,
       triangulate: args.triangulate,
       smoothBoundary: !args.fixedBoundary,
+      ...(args.creaseMethod ? { creaseMethod: args.creaseMethod } : {}),
+      ...(args.boundary ? { boundary: args.boundary } : {}),
       rules,
     });
     ms = performance.now() - start;

@@ -14,6 +14,42 @@ export interface Mesh {
   faceIndices: Uint32Array;
   /** Control-mesh edges kept on this mesh, as vertex index pairs (issue 4); may be empty. */
   controlEdges: Uint32Array;
+  /** OpenSubdiv's tags (creases, corners, holes, border rules; issue 16); absent when the mesh has none. */
+  tags?: MeshTags;
+}
+
+/** How the border of a tagged mesh is subdivided (OpenSubdiv's `t interpolateboundary` 2, 1, 0). */
+export type BoundaryInterpolation = 'edge' | 'edge-and-corner' | 'none';
+
+/** How semi-sharp creases decay from level to level (`t creasemethod normal` or `chaikin`). */
+export type CreaseMethod = 'uniform' | 'chaikin';
+
+/**
+ * OpenSubdiv's tags on a mesh, as OBJ `t` lines give them (in OFF: `# t ...`
+ * comments after the faces). Indices count from 0. Sharpness: 0 smooth,
+ * 10 and more infinitely sharp.
+ */
+export interface MeshTags {
+  /** Crease edges as vertex index pairs a0 b0 a1 b1 ..., each an edge of the mesh, once. */
+  creaseEdges: Uint32Array;
+  /** The sharpness of each crease edge (> 0). */
+  creaseSharpness: Float32Array;
+  /** Corner vertices, once each. */
+  cornerVertices: Uint32Array;
+  /** The sharpness of each corner (> 0). */
+  cornerSharpness: Float32Array;
+  /** Faces that are holes (ascending, once each): refined, shaping their neighbours, not drawn. */
+  holes: Uint32Array;
+  /** Default 'edge' (border edges sharp). */
+  boundary: BoundaryInterpolation;
+  /** The file had an interpolateboundary tag (written back on export). */
+  boundaryGiven: boolean;
+  /** Default 'uniform'. */
+  creaseMethod: CreaseMethod;
+  /** The file had a creasemethod tag (written back on export). */
+  creaseMethodGiven: boolean;
+  /** One line per tag the core read but does not apply ("line 12: tag 'smoothtriangles' is not applied"). */
+  notes: string[];
 }
 
 export type MeshFormat = 'off' | 'obj';
@@ -36,6 +72,10 @@ export interface SubdivideOptions {
   memoryLimitBytes?: number;
   /** quad-triangle: border vertices follow the cubic B-spline rule (true, default) or stay on the control border polygon. */
   smoothBoundary?: boolean;
+  /** Overrides the mesh's `t creasemethod` tag (Catmull-Clark and Loop with tags). */
+  creaseMethod?: CreaseMethod;
+  /** Overrides the mesh's `t interpolateboundary` tag (Catmull-Clark and Loop with tags). */
+  boundary?: BoundaryInterpolation;
   /** custom: the host and weights (rule-set.ts); required for scheme 'custom'. */
   rules?: RuleSet;
   /**

@@ -123,7 +123,9 @@ function unwrap<T>(result: RawResult<T>): T {
 
 /**
  * Parses OFF or OBJ text, or its UTF-8 bytes, into a checked mesh (a valid
- * oriented 2-manifold polygon mesh).
+ * oriented 2-manifold polygon mesh). OpenSubdiv's tag lines (OBJ `t ...`,
+ * OFF `# t ...` after the faces) come back as `mesh.tags`, absent when the
+ * file has none; a malformed tag is a `parse_error` on its line.
  */
 export function parseMesh(text: string | Uint8Array, format: MeshFormat): Mesh {
   return unwrap(module().read_mesh(text, format)).mesh;
@@ -187,7 +189,8 @@ export function exportMeshChunks(mesh: Mesh, format: MeshFormat, chunkBytes?: nu
 }
 
 /**
- * OFF or OBJ text of `mesh` as one string; coordinates round-trip exactly.
+ * OFF or OBJ text of `mesh` as one string; coordinates and tags round-trip
+ * exactly (tags after the faces; in OFF as `# t ...` comments).
  * A text beyond JavaScript's string limit (about 512 M characters) cannot be
  * one string: use {@link writeMesh} or {@link exportMeshChunks} for those.
  */

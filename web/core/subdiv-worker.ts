@@ -78,17 +78,32 @@ function buffersOf(level: LevelData): Transferable[] {
 }
 
 function meshBuffers(mesh: Mesh): Transferable[] {
-  const arrays = [mesh.positions, mesh.faceSizes, mesh.faceIndices, mesh.controlEdges];
+  const arrays: ArrayBufferView[] = [mesh.positions, mesh.faceSizes, mesh.faceIndices, mesh.controlEdges];
+  const { tags } = mesh;
+  if (tags) arrays.push(tags.creaseEdges, tags.creaseSharpness, tags.cornerVertices, tags.cornerSharpness, tags.holes);
   return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
 }
 
 function copyOf(mesh: Mesh): Mesh {
-  return {
+  const copy: Mesh = {
     positions: mesh.positions.slice(),
     faceSizes: mesh.faceSizes.slice(),
     faceIndices: mesh.faceIndices.slice(),
     controlEdges: mesh.controlEdges.slice(),
   };
+  const { tags } = mesh;
+  if (tags) {
+    copy.tags = {
+      ...tags,
+      creaseEdges: tags.creaseEdges.slice(),
+      creaseSharpness: tags.creaseSharpness.slice(),
+      cornerVertices: tags.cornerVertices.slice(),
+      cornerSharpness: tags.cornerSharpness.slice(),
+      holes: tags.holes.slice(),
+      notes: [...tags.notes],
+    };
+  }
+  return copy;
 }
 
 type Handlers = {

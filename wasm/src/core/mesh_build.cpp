@@ -509,6 +509,31 @@ Mesh_buffers drop_isolated_vertices(Mesh_buffers in) {
     out.control_edges.push_back(map[a]);
     out.control_edges.push_back(map[b]);
   }
+  // Tags follow their vertices; a crease or corner on a dropped vertex goes
+  // with it (a crease never has one: it is an edge of a face). Faces keep
+  // their numbers, so holes stay as they are.
+  const Mesh_tags& t = in.tags;
+  const auto kept = [&](std::uint32_t v) {
+    return v < nv && map[v] != 0xffffffffu;
+  };
+  out.tags = t;
+  out.tags.crease_edges.clear();
+  out.tags.crease_sharpness.clear();
+  for (std::size_t i = 0; i + 1 < t.crease_edges.size(); i += 2) {
+    const auto a = t.crease_edges[i], b = t.crease_edges[i + 1];
+    if (!kept(a) || !kept(b) || i / 2 >= t.crease_sharpness.size()) continue;
+    out.tags.crease_edges.push_back(map[a]);
+    out.tags.crease_edges.push_back(map[b]);
+    out.tags.crease_sharpness.push_back(t.crease_sharpness[i / 2]);
+  }
+  out.tags.corner_vertices.clear();
+  out.tags.corner_sharpness.clear();
+  for (std::size_t i = 0; i < t.corner_vertices.size(); ++i) {
+    const auto v = t.corner_vertices[i];
+    if (!kept(v) || i >= t.corner_sharpness.size()) continue;
+    out.tags.corner_vertices.push_back(map[v]);
+    out.tags.corner_sharpness.push_back(t.corner_sharpness[i]);
+  }
   return out;
 }
 

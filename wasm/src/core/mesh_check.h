@@ -47,8 +47,8 @@ Check_result check_buffers(
 /// Copy of `in` without the vertices no face uses; the others keep their
 /// relative order. Returns `in` itself (moved, not copied, when passed as an
 /// rvalue) when all are used. Precondition: check_buffers(in) succeeded.
-/// control_edges are remapped and pairs touching a dropped vertex are
-/// removed.
+/// control_edges and the tags' creases and corners are remapped, and those
+/// touching a dropped vertex are removed.
 Mesh_buffers drop_isolated_vertices(Mesh_buffers in);
 
 }  // namespace subdivlab::detail

@@ -29,6 +29,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <unordered_map>
 #include <vector>
 
 // Correctly rounded decimal -> double (Debian's libfast-float-dev, header
@@ -72,6 +73,13 @@ class Line_reader {
       const char* q = skip_blanks(p);
       ++line_;
       if (q == end_ || *q == '\n' || *q == '\r' || *q == '#') {
+        if (tag_comments_ && q != end_ && *q == '#' && is_tag_comment(q + 1)) {
+          // The line is read from after its '#': "t NAME counts ...".
+          line_begin_ = q + 1;
+          cursor_ = skip_blanks(q + 1);
+          line = line_;
+          return true;
+        }
         pos_ = after_line(q);
         continue;
       }
@@ -85,6 +93,16 @@ class Line_reader {
 
   const char* cursor() const { return cursor_; }
   const char* text_end() const { return end_; }
+
+  /// From now on a comment "# t ..." is a line of its own (OFF's tags, the
+  /// OBJ tag syntax after "# "); other comments stay comments.
+  void read_tag_comments() { tag_comments_ = true; }
+  /// Whether the current line is such a comment: it is read from after a
+  /// '#', where any other line starts at a line's beginning (found without
+  /// a flag to set on every line of the fast path).
+  bool at_tag_comment() const {
+    return line_begin_ != begin_ && line_begin_[-1] == '#';
+  }
 
   /// Ends the current line at `p` if only blanks and a comment follow;
   /// false (nothing consumed) otherwise.
@@ -127,6 +145,12 @@ class Line_reader {
   }
 
  private:
+  /// Whether a comment's text from `p` (after its '#') is a tag: blanks,
+  /// then "t" as a token of its own.
+  bool is_tag_comment(const char* p) const {
+    p = skip_blanks(p);
+    return p != end_ && *p == 't' && token_ends(p + 1);
+  }
   /// Offset of the line after the one `p` is in (past its terminator).
   std::size_t after_line(const char* p) const {
     while (p != end_ && *p != '\n' && *p != '\r') ++p;
@@ -151,6 +175,7 @@ class Line_reader {
   int line_ = 0;
   const char* line_begin_ = nullptr;
   const char* cursor_ = nullptr;
+  bool tag_comments_ = false;
 };
 
 enum class Number { ok, not_number, not_finite };
@@ -490,12 +515,374 @@ bool read_coordinate(std::string_view tok, int line, const std::string& what,
 
 const char* const axis_name[3] = {"x", "y", "z"};
 
+// ---------------------------------------------------------------- tags
+//
+// OpenSubdiv's tag lines (regression/common/shape_utils.cpp's parseTag,
+// far_utils.h's use of them): "t NAME nint/nfloat/nstring" and then that
+// many integers, floats and strings. Indices in tags count from 0, in OBJ
+// as in OFF (unlike OBJ's "f" lines). A line is checked for its own syntax
+// when it is read; what needs the whole mesh (indices against the vertex
+// and face counts, crease pairs against the edges) is checked by
+// apply_tags once the file is read, still naming the tag's line.
+
+enum class Tag_kind { crease, corner, hole, boundary, crease_method };
+
+/// A tag line whose own syntax is checked.
+struct Tag_line {
+  int line = 0;
+  Tag_kind kind = Tag_kind::crease;
+  /// Vertices (crease: in pairs; corner) or faces (hole), as in the file.
+  std::vector<long long> indices;
+  /// One for all the edges or vertices, or one each.
+  std::vector<float> sharpness;
+  Boundary_interpolation boundary = Boundary_interpolation::edge_only;
+  Crease_method crease_method = Crease_method::uniform;
+};
+
+/// The tags of a file in line order, and the notes on those not applied.
+struct Tag_list {
+  std::vector<Tag_line> lines;
+  std::vector<std::string> notes;
+  /// Tags not applied, noted or not: a note each for the first
+  /// max_unapplied_notes, then one line for the rest (a file of a million
+  /// such lines must not become a million messages).
+  std::size_t unapplied = 0;
+};
+
+constexpr std::size_t max_unapplied_notes = 100;
+
+std::string plural(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+/// "a/b/c" of three non-negative decimal integers (saturating as parse_int
+/// does: a huge count then fails the count of values).
+bool parse_tag_counts(std::string_view tok, unsigned long long n[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t slash = tok.find('/');
+    if ((i < 2) != (slash != std::string_view::npos)) return false;
+    const std::string_view part = tok.substr(0, slash);
+    if (part.empty()) return false;
+    for (const char c : part)
+      if (c < '0' || c > '9') return false;
+    long long v = 0;
+    parse_int(part, v);
+    n[i] = static_cast<unsigned long long>(v);
+    if (i < 2) tok.remove_prefix(slash + 1);
+  }
+  return true;
+}
+
+/// One sharpness value: a finite number, 0 or more, that a float holds.
+bool read_sharpness(std::string_view tok, int line, const std::string& tag,
+                    float& out, Result<Mesh_buffers>& r) {
+  double v = 0;
+  const Number n = parse_double(tok, v);
+  std::string problem;
+  if (n == Number::not_number) {
+    problem = "is not a number";
+  } else if (n == Number::not_finite) {
+    problem = "is not finite";
+  } else if (v < 0) {
+    problem = "is negative (0 is smooth, 10 and more infinitely sharp)";
+  } else if (v > std::numeric_limits<float>::max()) {
+    problem = "is too large for a float (10 and more is infinitely sharp)";
+  } else {
+    out = static_cast<float>(v);
+    return true;
+  }
+  r = parse_fail(line, tag + ": sharpness " + quoted(tok) + " " + problem);
+  return false;
+}
+
+/// Reads the tag line `tok` ("t", NAME, counts, values) into `tags`, or
+/// fills `r` with what is wrong with it.
+bool read_tag(const std::vector<std::string_view>& tok, int line,
+              Tag_list& tags, Result<Mesh_buffers>& r) {
+  const auto fail = [&](const std::string& what) {
+    r = parse_fail(line, what);
+    return false;
+  };
+  if (tok.size() < 3) {
+    return fail(
+        "a tag needs a name and its counts: t NAME nint/nfloat/nstring "
+        "values...");
+  }
+  const std::string_view name = tok[1], counts = tok[2];
+  const std::string tag = "tag " + quoted(name);
+  unsigned long long n[3] = {0, 0, 0};
+  if (!parse_tag_counts(counts, n)) {
+    return fail(tag + " counts " + quoted(counts) +
+                " are not nint/nfloat/nstring (three integers 0 or more, as "
+                "in 2/1/0)");
+  }
+  const std::size_t given = tok.size() - 3;
+  if (n[0] + n[1] + n[2] != given) {
+    return fail(tag + " needs " + std::to_string(n[0] + n[1] + n[2]) +
+                " values after its counts " + quoted(counts) + ", found " +
+                std::to_string(given));
+  }
+  const std::size_t ni = n[0], nf = n[1], ns = n[2];
+  const std::string_view* ints = tok.data() + 3;
+  const std::string_view* floats = ints + ni;
+  const std::string_view* strings = floats + nf;
+
+  Tag_line t;
+  t.line = line;
+  if (name == "crease") {
+    t.kind = Tag_kind::crease;
+  } else if (name == "corner") {
+    t.kind = Tag_kind::corner;
+  } else if (name == "hole") {
+    t.kind = Tag_kind::hole;
+  } else if (name == "interpolateboundary") {
+    t.kind = Tag_kind::boundary;
+  } else if (name == "creasemethod") {
+    t.kind = Tag_kind::crease_method;
+  } else {
+    // Well formed, not applied (facevaryinginterpolateboundary,
+    // smoothtriangles ...): its values must still be what the counts say.
+    for (std::size_t i = 0; i < ni; ++i) {
+      long long v = 0;
+      if (!parse_int(ints[i], v))
+        return fail(tag + ": " + quoted(ints[i]) + " is not an integer");
+    }
+    for (std::size_t i = 0; i < nf; ++i) {
+      double v = 0;
+      if (parse_double(floats[i], v) == Number::not_number)
+        return fail(tag + ": " + quoted(floats[i]) + " is not a number");
+    }
+    if (tags.unapplied++ < max_unapplied_notes)
+      tags.notes.push_back(at(line) + tag + " is not applied");
+    return true;
+  }
+
+  if (t.kind == Tag_kind::boundary) {
+    if (ni != 1 || nf != 0 || ns != 0) {
+      return fail(tag + " needs the counts 1/0/0 (one integer), found " +
+                  quoted(counts));
+    }
+    long long v = -1;
+    if (!parse_int(ints[0], v) || v < 0 || v > 2) {
+      return fail(tag + ": " + quoted(ints[0]) +
+                  " is not 0 (none), 1 (edge and corner) or 2 (edge only)");
+    }
+    t.boundary = v == 0   ? Boundary_interpolation::none
+                 : v == 1 ? Boundary_interpolation::edge_and_corner
+                          : Boundary_interpolation::edge_only;
+    tags.lines.push_back(std::move(t));
+    return true;
+  }
+  if (t.kind == Tag_kind::crease_method) {
+    if (ni != 0 || nf != 0 || ns != 1) {
+      return fail(tag + " needs the counts 0/0/1 (one string), found " +
+                  quoted(counts));
+    }
+    if (strings[0] == "normal") {
+      t.crease_method = Crease_method::uniform;
+    } else if (strings[0] == "chaikin") {
+      t.crease_method = Crease_method::chaikin;
+    } else {
+      return fail(tag + ": " + quoted(strings[0]) +
+                  " is not normal or chaikin");
+    }
+    tags.lines.push_back(std::move(t));
+    return true;
+  }
+
+  // crease, corner, hole: indices, and sharpness for the first two.
+  if (ns != 0)
+    return fail(tag + " takes no strings, found " + std::to_string(ns));
+  const bool faces = t.kind == Tag_kind::hole;
+  if (faces && nf != 0) {
+    return fail(tag + " takes face indices only (counts N/0/0), found " +
+                quoted(counts));
+  }
+  if (t.kind == Tag_kind::crease && ni % 2 != 0) {
+    return fail(tag + " has " + plural(ni, "vertex", "vertices") +
+                ": a crease's vertices come in pairs, one pair per edge");
+  }
+  if (!faces) {
+    const std::size_t items = t.kind == Tag_kind::crease ? ni / 2 : ni;
+    const char* item = t.kind == Tag_kind::crease ? "edge" : "vertex";
+    if (nf != 1 && nf != items) {
+      return fail(tag + " has " +
+                  plural(nf, "sharpness value", "sharpness values") + " for " +
+                  plural(items, item,
+                         t.kind == Tag_kind::crease ? "edges" : "vertices") +
+                  " (give 1 for all or one per " + item + ")");
+    }
+  }
+  t.indices.resize(ni);
+  for (std::size_t i = 0; i < ni; ++i) {
+    if (!parse_int(ints[i], t.indices[i])) {
+      return fail(tag + ": " + (faces ? "face" : "vertex") + " index " +
+                  quoted(ints[i]) + " is not an integer");
+    }
+    // parse_int saturates: such a value is quoted as the file has it.
+    if (t.indices[i] > 0xffffffffll || t.indices[i] < -0xffffffffll) {
+      return fail(tag + ": " + (faces ? "face " : "vertex ") + quoted(ints[i]) +
+                  " is out of range (more than any mesh can hold)");
+    }
+  }
+  t.sharpness.resize(nf);
+  for (std::size_t i = 0; i < nf; ++i) {
+    if (!read_sharpness(floats[i], line, tag, t.sharpness[i], r)) return false;
+  }
+  tags.lines.push_back(std::move(t));
+  return true;
+}
+
+/// Checks the tags against the mesh that `check_buffers` has accepted (its
+/// vertex and face numbers as the file gave them, before isolated vertices
+/// go) and stores them in mesh.tags: a repeated edge or vertex keeps its
+/// first place and takes its last value, sharpness 0 (smooth) is dropped,
+/// holes are sorted. False, with `r` naming the tag's line, on an index out
+/// of range or a crease pair that is not an edge.
+bool apply_tags(Tag_list&& tags, Mesh_buffers& mesh, Result<Mesh_buffers>& r) {
+  Mesh_tags& out = mesh.tags;
+  out.notes = std::move(tags.notes);
+  if (tags.unapplied > max_unapplied_notes) {
+    out.notes.push_back("and " +
+                        std::to_string(tags.unapplied - max_unapplied_notes) +
+                        " more tags that are not applied");
+  }
+  if (tags.lines.empty()) return true;
+  const std::size_t nv = mesh.vertex_count(), nf = mesh.face_count();
+  const auto key = [](std::uint64_t a, std::uint64_t b) {
+    return a < b ? a << 32 | b : b << 32 | a;
+  };
+  std::vector<std::uint64_t> edges;  // sorted, built for the first crease
+  std::unordered_map<std::uint64_t, std::size_t> crease_at;
+  std::unordered_map<std::uint32_t, std::size_t> corner_at;
+  std::vector<int> corner_line;  // the line that last set each corner
+  for (const Tag_line& t : tags.lines) {
+    const std::string tag = t.kind == Tag_kind::crease   ? "tag 'crease'"
+                            : t.kind == Tag_kind::corner ? "tag 'corner'"
+                                                         : "tag 'hole'";
+    const std::size_t limit = t.kind == Tag_kind::hole ? nf : nv;
+    for (const long long i : t.indices) {
+      if (i >= 0 && static_cast<unsigned long long>(i) < limit) continue;
+      r = parse_fail(
+          t.line,
+          tag + ": " + (t.kind == Tag_kind::hole ? "face " : "vertex ") +
+              std::to_string(i) + " is out of range (" +
+              plural(limit, t.kind == Tag_kind::hole ? "face" : "vertex",
+                     t.kind == Tag_kind::hole ? "faces" : "vertices") +
+              "; tag indices start at 0)");
+      return false;
+    }
+    switch (t.kind) {
+      case Tag_kind::boundary:
+        out.boundary = t.boundary;
+        out.boundary_given = true;
+        break;
+      case Tag_kind::crease_method:
+        out.crease_method = t.crease_method;
+        out.crease_method_given = true;
+        break;
+      case Tag_kind::hole:
+        for (const long long f : t.indices)
+          out.holes.push_back(static_cast<std::uint32_t>(f));
+        break;
+      case Tag_kind::crease:
+        if (edges.empty()) {
+          edges.reserve(mesh.face_indices.size());
+          std::size_t o = 0;
+          for (const std::uint32_t k : mesh.face_sizes) {
+            for (std::uint32_t c = 0; c < k; ++c)
+              edges.push_back(key(mesh.face_indices[o + c],
+                                  mesh.face_indices[o + (c + 1) % k]));
+            o += k;
+          }
+          std::sort(edges.begin(), edges.end());
+        }
+        for (std::size_t j = 0; j + 1 < t.indices.size(); j += 2) {
+          const auto a = static_cast<std::uint32_t>(t.indices[j]);
+          const auto b = static_cast<std::uint32_t>(t.indices[j + 1]);
+          const std::uint64_t e = key(a, b);
+          if (!std::binary_search(edges.begin(), edges.end(), e)) {
+            r = parse_fail(t.line, tag + ": vertices " + std::to_string(a) +
+                                       " and " + std::to_string(b) +
+                                       " are not joined by an edge of the "
+                                       "mesh");
+            return false;
+          }
+          const float s =
+              t.sharpness.size() == 1 ? t.sharpness[0] : t.sharpness[j / 2];
+          const auto found = crease_at.emplace(e, out.crease_sharpness.size());
+          if (found.second) {
+            out.crease_edges.push_back(a);
+            out.crease_edges.push_back(b);
+            out.crease_sharpness.push_back(s);
+          } else {
+            out.crease_sharpness[found.first->second] = s;
+          }
+        }
+        break;
+      case Tag_kind::corner:
+        for (std::size_t j = 0; j < t.indices.size(); ++j) {
+          const auto v = static_cast<std::uint32_t>(t.indices[j]);
+          const float s =
+              t.sharpness.size() == 1 ? t.sharpness[0] : t.sharpness[j];
+          const auto found = corner_at.emplace(v, out.corner_sharpness.size());
+          if (found.second) {
+            out.corner_vertices.push_back(v);
+            out.corner_sharpness.push_back(s);
+            corner_line.push_back(t.line);
+          } else {
+            out.corner_sharpness[found.first->second] = s;
+            corner_line[found.first->second] = t.line;
+          }
+        }
+        break;
+    }
+  }
+  // Sharpness 0 is smooth: nothing to keep.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.crease_sharpness.size(); ++i) {
+    if (out.crease_sharpness[i] == 0) continue;
+    out.crease_edges[2 * kept] = out.crease_edges[2 * i];
+    out.crease_edges[2 * kept + 1] = out.crease_edges[2 * i + 1];
+    out.crease_sharpness[kept++] = out.crease_sharpness[i];
+  }
+  out.crease_edges.resize(2 * kept);
+  out.crease_sharpness.resize(kept);
+  // A corner on a vertex no face uses goes with the vertex (as
+  // drop_isolated_vertices drops it); the user is told.
+  std::vector<bool> used;
+  if (!out.corner_vertices.empty()) {
+    used.assign(nv, false);
+    for (const std::uint32_t v : mesh.face_indices) used[v] = true;
+  }
+  kept = 0;
+  for (std::size_t i = 0; i < out.corner_sharpness.size(); ++i) {
+    if (out.corner_sharpness[i] == 0) continue;
+    if (!used[out.corner_vertices[i]]) {
+      out.notes.push_back(at(corner_line[i]) + "tag 'corner': vertex " +
+                          std::to_string(out.corner_vertices[i]) +
+                          " is used by no face; it and its corner are dropped");
+      continue;
+    }
+    out.corner_vertices[kept] = out.corner_vertices[i];
+    out.corner_sharpness[kept++] = out.corner_sharpness[i];
+  }
+  out.corner_vertices.resize(kept);
+  out.corner_sharpness.resize(kept);
+  std::sort(out.holes.begin(), out.holes.end());
+  out.holes.erase(std::unique(out.holes.begin(), out.holes.end()),
+                  out.holes.end());
+  return true;
+}
+
 /// The checks build_mesh makes, with faces named by their lines; then the
-/// isolated vertices go (the corners' halfedges stay as they are).
+/// tags are checked against the mesh and kept, and the isolated vertices go
+/// (the corners' halfedges stay as they are).
 Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
                             const std::vector<int>& face_lines,
                             std::uint32_t vertex_offset,
-                            std::vector<std::uint32_t>* corner_halfedges) {
+                            std::vector<std::uint32_t>* corner_halfedges,
+                            Tag_list&& tags) {
   detail::Check_naming naming;
   naming.face_lines = &face_lines;
   naming.vertex_offset = vertex_offset;
@@ -506,6 +893,7 @@ Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
     r.status = std::move(check.status);
     return r;
   }
+  if (!apply_tags(std::move(tags), mesh, r)) return r;
   r.value = detail::drop_isolated_vertices(std::move(mesh));
   return r;
 }
@@ -697,12 +1085,20 @@ Result<Mesh_buffers> read_off(std::string_view text,
     mesh.face_sizes.push_back(static_cast<std::uint32_t>(k));
     face_lines.push_back(line);
   }
-  if (in.next(tok, line)) {
-    return parse_fail(line, "extra data after the " + std::to_string(nf) +
-                                " faces the header declares (header counts "
-                                "disagree with the data)");
+  // After the faces, comments "# t ..." are tags; any other data is not.
+  Tag_list tags;
+  in.read_tag_comments();
+  while (in.next(tok, line)) {
+    if (!in.at_tag_comment()) {
+      return parse_fail(line, "extra data after the " + std::to_string(nf) +
+                                  " faces the header declares (header counts "
+                                  "disagree with the data)");
+    }
+    Result<Mesh_buffers> r;
+    if (!read_tag(tok, line, tags, r)) return r;
   }
-  return finish(std::move(mesh), face_lines, 0, corner_halfedges);
+  return finish(std::move(mesh), face_lines, 0, corner_halfedges,
+                std::move(tags));
 }
 
 // ---------------------------------------------------------------- OBJ
@@ -747,6 +1143,7 @@ Result<Mesh_buffers> read_obj(std::string_view text,
   int line = 0;
   Mesh_buffers mesh;
   std::vector<int> face_lines;
+  Tag_list tags;
   while (fast_obj_run(in, fast, mesh, face_lines, line) ==
          Run_stop::slow_line) {
     in.take_line(tok);
@@ -829,11 +1226,15 @@ Result<Mesh_buffers> read_obj(std::string_view text,
       }
       mesh.face_sizes.push_back(static_cast<std::uint32_t>(tok.size() - 1));
       face_lines.push_back(line);
+    } else if (k == "t") {
+      Result<Mesh_buffers> r;
+      if (!read_tag(tok, line, tags, r)) return r;
     } else if (!is_ignored_obj_statement(k)) {
       return parse_fail(line, "unknown OBJ statement " + quoted(k));
     }
   }
-  return finish(std::move(mesh), face_lines, 1, corner_halfedges);
+  return finish(std::move(mesh), face_lines, 1, corner_halfedges,
+                std::move(tags));
 }
 
 // ---------------------------------------------------------------- writing
@@ -999,6 +1400,17 @@ class Chunk_writer {
   }
   bool ok() const { return ok_; }
 
+  /// Text of any length, in pieces of at most max_piece bytes.
+  void put(std::string_view text) {
+    while (!text.empty()) {
+      const std::size_t n = std::min(text.size(), max_piece);
+      char* p = reserve();
+      std::memcpy(p, text.data(), n);
+      commit(p + n);
+      text.remove_prefix(n);
+    }
+  }
+
   /// Hands over what is left; false if the sink stopped the writing.
   bool finish() {
     flush();
@@ -1016,6 +1428,75 @@ class Chunk_writer {
   const Chunk_sink& sink_;
   bool ok_ = true;
 };
+
+/// A sharpness as its shortest "%.Ng" that reads back as the same float,
+/// preferring a form without an exponent ("10", not "1e+01"); 9 significant
+/// digits always do. snprintf, not std::to_chars (em++ 3.1.6's libc++ has no
+/// floating-point one); tags are few.
+std::string float_text(float x) {
+  char buf[32];
+  std::string with_exponent;
+  for (int precision = 1; precision <= 9; ++precision) {
+    const int n = std::snprintf(buf, sizeof buf, "%.*g", precision,
+                                static_cast<double>(x));
+    double back = 0;
+    fast_float::from_chars(buf, buf + n, back);
+    if (static_cast<float>(back) != x) continue;
+    if (std::memchr(buf, 'e', static_cast<std::size_t>(n)) == nullptr)
+      return std::string(buf, static_cast<std::size_t>(n));
+    if (with_exponent.empty())
+      with_exponent.assign(buf, static_cast<std::size_t>(n));
+  }
+  if (!with_exponent.empty()) return with_exponent;
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(x));
+  return buf;
+}
+
+/// The tags as OpenSubdiv's tag lines, after the faces: in OBJ as they are,
+/// in OFF as comments ("# t ..."), which SubdivLab reads back and other
+/// readers skip. One crease edge or corner per line (each with its own
+/// sharpness), holes 16 to a line. Notes are not written.
+void write_tags(const Mesh_tags& tags, bool off, Chunk_writer& out) {
+  const char* const start = off ? "# t " : "t ";
+  std::string line;
+  for (std::size_t i = 0; i < tags.crease_sharpness.size(); ++i) {
+    line = start;
+    line += "crease 2/1/0 " + std::to_string(tags.crease_edges[2 * i]) + " " +
+            std::to_string(tags.crease_edges[2 * i + 1]) + " " +
+            float_text(tags.crease_sharpness[i]) + "\n";
+    out.put(line);
+  }
+  for (std::size_t i = 0; i < tags.corner_sharpness.size(); ++i) {
+    line = start;
+    line += "corner 1/1/0 " + std::to_string(tags.corner_vertices[i]) + " " +
+            float_text(tags.corner_sharpness[i]) + "\n";
+    out.put(line);
+  }
+  constexpr std::size_t holes_per_line = 16;
+  for (std::size_t i = 0; i < tags.holes.size(); i += holes_per_line) {
+    const std::size_t n = std::min(holes_per_line, tags.holes.size() - i);
+    line = start;
+    line += "hole " + std::to_string(n) + "/0/0";
+    for (std::size_t j = i; j < i + n; ++j)
+      line += " " + std::to_string(tags.holes[j]);
+    out.put(line + "\n");
+  }
+  if (tags.boundary_given ||
+      tags.boundary != Boundary_interpolation::edge_only) {
+    const char* value =
+        tags.boundary == Boundary_interpolation::none              ? "0"
+        : tags.boundary == Boundary_interpolation::edge_and_corner ? "1"
+                                                                   : "2";
+    out.put(std::string(start) + "interpolateboundary 1/0/0 " + value + "\n");
+  }
+  if (tags.crease_method_given ||
+      tags.crease_method != Crease_method::uniform) {
+    out.put(
+        std::string(start) + "creasemethod 0/0/1 " +
+        (tags.crease_method == Crease_method::chaikin ? "chaikin" : "normal") +
+        "\n");
+  }
+}
 
 /// read_mesh, with or without the fast path.
 Result<Mesh_buffers> read_text(std::string_view text, Mesh_format format,
@@ -1053,6 +1534,83 @@ Result<Mesh_buffers> read_mesh_general(
 }
 }  // namespace detail
 
+namespace {
+
+/// check_writable's part for the tags: what read_mesh would refuse when
+/// reading them back (sizes that do not match, indices out of range, a
+/// sharpness that is negative or not finite, a crease that is not an edge).
+Status check_writable_tags(const Mesh_buffers& mesh) {
+  const Mesh_tags& t = mesh.tags;
+  const auto bad = [](const std::string& what) {
+    return Status::error(Status_code::invalid_mesh, "tags: " + what);
+  };
+  if (t.crease_edges.size() != 2 * t.crease_sharpness.size()) {
+    return bad(std::to_string(t.crease_edges.size()) + " crease vertices for " +
+               std::to_string(t.crease_sharpness.size()) +
+               " sharpness values (two vertices per sharpness)");
+  }
+  if (t.corner_vertices.size() != t.corner_sharpness.size()) {
+    return bad(std::to_string(t.corner_vertices.size()) +
+               " corner vertices for " +
+               std::to_string(t.corner_sharpness.size()) +
+               " sharpness values (one vertex per sharpness)");
+  }
+  const std::size_t nv = mesh.vertex_count(), nf = mesh.face_count();
+  for (const std::uint32_t v : t.crease_edges) {
+    if (v >= nv) {
+      return bad("crease vertex " + std::to_string(v) + " is out of range (" +
+                 std::to_string(nv) + " vertices)");
+    }
+  }
+  for (const std::uint32_t v : t.corner_vertices) {
+    if (v >= nv) {
+      return bad("corner vertex " + std::to_string(v) + " is out of range (" +
+                 std::to_string(nv) + " vertices)");
+    }
+  }
+  for (const std::uint32_t f : t.holes) {
+    if (f >= nf) {
+      return bad("hole face " + std::to_string(f) + " is out of range (" +
+                 std::to_string(nf) + " faces)");
+    }
+  }
+  for (const std::vector<float>* values :
+       {&t.crease_sharpness, &t.corner_sharpness}) {
+    for (const float s : *values) {
+      if (!(s >= 0) || !std::isfinite(s)) {
+        return bad(
+            std::string(values == &t.crease_sharpness ? "crease" : "corner") +
+            " sharpness " + std::to_string(s) +
+            " is not a finite number 0 or more");
+      }
+    }
+  }
+  if (t.crease_edges.empty()) return Status::success();
+  std::vector<std::uint64_t> edges;
+  edges.reserve(mesh.face_indices.size());
+  std::size_t o = 0;
+  for (const std::uint32_t k : mesh.face_sizes) {
+    for (std::uint32_t c = 0; c < k; ++c) {
+      const std::uint64_t a = mesh.face_indices[o + c],
+                          b = mesh.face_indices[o + (c + 1) % k];
+      edges.push_back(a < b ? a << 32 | b : b << 32 | a);
+    }
+    o += k;
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < t.crease_edges.size(); i += 2) {
+    const std::uint64_t a = t.crease_edges[i], b = t.crease_edges[i + 1];
+    if (!std::binary_search(edges.begin(), edges.end(),
+                            a < b ? a << 32 | b : b << 32 | a)) {
+      return bad("crease " + std::to_string(a) + " " + std::to_string(b) +
+                 " is not an edge of the mesh");
+    }
+  }
+  return Status::success();
+}
+
+}  // namespace
+
 Status check_writable(const Mesh_buffers& mesh) {
   if (mesh.positions.size() % 3 != 0)
     return Status::error(Status_code::invalid_mesh,
@@ -1081,7 +1639,7 @@ Status check_writable(const Mesh_buffers& mesh) {
         "vertex index " + std::to_string(mesh.face_indices[i]) +
             " is out of range (" + std::to_string(nv) + " vertices)");
   }
-  return Status::success();
+  return check_writable_tags(mesh);
 }
 
 bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
@@ -1134,6 +1692,7 @@ bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
     out.commit(p);
     index += k;
   }
+  if (out.ok()) write_tags(mesh.tags, off, out);
   return out.finish();
 }
 

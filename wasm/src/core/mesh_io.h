@@ -21,6 +21,11 @@ enum class Mesh_format { off, obj };
 /// Errors name the problem and, where it applies, the 1-based line.
 /// Syntax errors are parse_error; index, face-size and manifold problems are
 /// invalid_mesh. Vertices no face uses are dropped, as build_mesh drops them.
+/// OpenSubdiv's tag lines ("t crease 2/1/0 0 1 2.5", indices from 0; in OFF
+/// as comments "# t ..." after the faces) are checked and kept in
+/// Mesh_buffers::tags; a malformed one is a parse_error on its line, even
+/// where the check needs the whole mesh (a crease that is not an edge), and
+/// a well-formed one the product does not apply leaves a note.
 /// With `corner_halfedges`, also each corner's halfedge as the checks
 /// number it (mesh_check.h), for build_checked_mesh.
 Result<Mesh_buffers> read_mesh(
@@ -38,9 +43,11 @@ Result<Mesh_buffers> read_mesh_general(
 
 /// Whether write_mesh can write `mesh` so that read_mesh takes it back:
 /// positions in threes and finite, face sizes that add up to the indices,
-/// every index naming a vertex. O(n) without
-/// allocating (it does not check manifoldness), for buffers from outside the
-/// core. Fails with invalid_mesh.
+/// every index naming a vertex, and tags that read back (sizes that match,
+/// indices in range, sharpness finite and 0 or more, creases on edges).
+/// O(n) (it does not check manifoldness), allocating only to look creases up
+/// among the edges, for buffers from outside the core. Fails with
+/// invalid_mesh.
 Status check_writable(const Mesh_buffers& mesh);
 
 /// Takes one piece of written text; returns false to stop the writing.
@@ -60,7 +67,9 @@ bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
 
 /// OFF / OBJ text of the mesh. Coordinates are written as printf's "%.17g"
 /// writes them (17 significant digits) so that reading the text back gives
-/// the same doubles.
+/// the same doubles. Tags follow the faces as tag lines (OFF: "# t ..."
+/// comments), sharpness in the fewest digits that give the same float; a
+/// mesh without tags is written as before tags existed.
 /// Precondition: check_writable(mesh) succeeds (else it reads past the
 /// index array).
 std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format);

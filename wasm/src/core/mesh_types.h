@@ -36,12 +36,17 @@ enum class Crease_method : std::uint8_t {
 };
 
 /// OpenSubdiv's tags on a mesh (OBJ `t` lines: crease, corner, hole,
-/// interpolateboundary), which Catmull-Clark and Loop apply with
+/// interpolateboundary, creasemethod; in OFF the same lines as `# t ...`
+/// comments after the faces), which Catmull-Clark and Loop apply with
 /// OpenSubdiv's rules. Sharpness is OpenSubdiv's float: 0 smooth, 10 and
-/// above infinitely sharp, decreasing by one per level in between.
+/// above infinitely sharp, decreasing by one per level in between. The
+/// reader keeps the order of first appearance (a repeated edge or vertex
+/// keeps its first place and its last value), so that load-save-load gives
+/// the same tags.
 struct Mesh_tags {
   /// Pairs of vertex indices a0 b0 a1 b1 ..., each an edge of the mesh,
-  /// with the sharpness of each pair (> 0; an edge appears once).
+  /// with the sharpness of each pair (> 0; an edge appears once, in the
+  /// direction the file first gave it).
   std::vector<std::uint32_t> crease_edges;
   std::vector<float> crease_sharpness;
   /// Vertex indices with their sharpness (> 0; a vertex appears once).
@@ -56,12 +61,25 @@ struct Mesh_tags {
   Crease_method crease_method = Crease_method::uniform;
   /// The file had a creasemethod tag (written back on export).
   bool crease_method_given = false;
+  /// One line per well-formed tag the product does not apply
+  /// ("line 12: tag 'smoothtriangles' is not applied"; after 100 of them
+  /// one line counts the rest) or corner it dropped with its unused vertex,
+  /// for the user; never written back and no part of a result.
+  std::vector<std::string> notes;
 
   /// Nothing that changes a result: no crease, corner or hole, and the
   /// default border rules.
   bool empty() const {
     return crease_edges.empty() && corner_vertices.empty() && holes.empty() &&
            boundary == Boundary_interpolation::edge_only;
+  }
+
+  /// Anything at all to show or write: a tag that changes a result, an
+  /// interpolateboundary or creasemethod tag (even one that gives the
+  /// default), a non-default crease method, or a note.
+  bool present() const {
+    return !empty() || boundary_given || crease_method_given ||
+           crease_method != Crease_method::uniform || !notes.empty();
   }
 };
 
