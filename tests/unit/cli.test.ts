@@ -190,11 +190,31 @@ describe('subdiv CLI', () => {
     );
   });
 
-  it('--crease-method and --boundary are taken for subdividing', () => {
+  it('--crease-method and --boundary are taken for subdividing; tags survive --levels 0', () => {
     const r = subdiv([fixture('cube-creased.obj'), '--crease-method', 'chaikin', '--boundary', 'none', '--stats']);
     expect(r.stderr).toBe('');
     expect(r.status).toBe(0);
     expect(JSON.parse(r.stdout).faces).toBe(24);
+    // The 3 x 3 patch's file says interpolateboundary 1 (edge and corner); --boundary none
+    // overrides it: the 8 faces at the border become holes, so their 32 children are, and
+    // the result says which mode made it.
+    const file = join(work, 'file-mode.obj');
+    const none = join(work, 'none.obj');
+    expect(subdiv([fixture('quad-patch-corners.obj'), '-o', file]).status).toBe(0);
+    expect(subdiv([fixture('quad-patch-corners.obj'), '--boundary', 'none', '-o', none]).status).toBe(0);
+    const a = parseMesh(readFileSync(file, 'utf8'), 'obj');
+    const b = parseMesh(readFileSync(none, 'utf8'), 'obj');
+    expect(a.tags?.boundary).toBe('edge-and-corner');
+    expect(a.tags?.holes.length).toBe(0);
+    expect(b.tags?.boundary).toBe('none');
+    expect(b.tags?.holes.length).toBe(32);
+    const out = join(work, 'creased.off');
+    const converted = subdiv([fixture('cube-creased.obj'), '--levels', '0', '-o', out]);
+    expect(converted.status).toBe(0);
+    const text = readFileSync(out, 'utf8');
+    expect(text).toContain('# t crease 2/1/0 4 5 2\n');
+    expect(text).toContain('# t interpolateboundary 1/0/0 2\n');
+    expect(parseMesh(text, 'off').tags?.cornerVertices).toEqual(new Uint32Array([6]));
   });
 
   it.each([

@@ -408,6 +408,7 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
 Mesh_tags unchanged_mesh_tags(const Mesh_buffers& in, const Mesh& mesh) {
   if (mesh.number_of_faces() != in.face_count()) return {};
   Mesh_tags tags = in.tags;
+  tags.notes.clear();  // the reader's, for the user who loaded the file
   if (mesh.number_of_vertices() == in.vertex_count()) return tags;
   std::vector<std::uint32_t> rank(in.vertex_count(), refine::kNone);
   for (std::uint32_t v : in.face_indices) rank[v] = 0;
