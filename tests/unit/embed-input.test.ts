@@ -10,13 +10,13 @@ import { readEmbedState } from '../../web/embed/embed-state';
 const attrs = (values: Record<string, string>) => (name: string) => values[name] ?? null;
 
 describe('element attributes', () => {
-  it('default to Catmull-Clark level 0, smooth, minimal controls, no overlays', () => {
+  it('default to Catmull-Clark level 0, smooth, minimal controls, no overlays but the creases', () => {
     expect(readEmbedState(attrs({}))).toEqual({
       src: '',
       scheme: 'catmull-clark',
       levels: 0,
       renderMode: 'smooth',
-      overlays: { control: false, curves: false, bbox: false },
+      overlays: { control: false, curves: false, bbox: false, creases: true },
       triangulate: false,
       rules: '',
       view: null,
@@ -37,6 +37,7 @@ describe('element attributes', () => {
         'control-mesh': '',
         'control-edges': 'true',
         bbox: '0',
+        creases: '0',
         triangulate: '',
         rules: 'rules/loop.json',
         view: '1,2,3,0,0,0,0,1,0',
@@ -50,7 +51,7 @@ describe('element attributes', () => {
       scheme: 'loop',
       levels: 3,
       renderMode: 'edges',
-      overlays: { control: true, curves: true, bbox: false },
+      overlays: { control: true, curves: true, bbox: false, creases: false },
       triangulate: true,
       rules: 'rules/loop.json',
       view: { position: [1, 2, 3], target: [0, 0, 0], up: [0, 1, 0] },
@@ -131,11 +132,11 @@ describe('iframe commands', () => {
     [{ subdivlab: 'set-render-mode', mode: 'glossy' }, 'set-render-mode: unknown mode "glossy"'],
     [
       { subdivlab: 'set-overlay', overlay: 'src', on: true },
-      'set-overlay needs overlay (control-mesh, control-edges or bbox) and on (true or false)',
+      'set-overlay needs overlay (control-mesh, control-edges, bbox or creases) and on (true or false)',
     ],
     [
       { subdivlab: 'set-overlay', overlay: 'bbox', on: 1 },
-      'set-overlay needs overlay (control-mesh, control-edges or bbox) and on (true or false)',
+      'set-overlay needs overlay (control-mesh, control-edges, bbox or creases) and on (true or false)',
     ],
     [{ subdivlab: 'set-triangulate', on: 'yes' }, 'set-triangulate needs on (true or false)'],
     [null, 'a command is an object { subdivlab: NAME, ... }'],

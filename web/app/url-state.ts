@@ -9,7 +9,7 @@
  * stepped one at a time (computed ones are reused), then the camera is set.
  */
 import type { SchemeName } from '../core/mesh';
-import { OVERLAY_NAMES, type RenderMode } from '../render/render-mode';
+import { OVERLAY_DEFAULTS, OVERLAY_NAMES, type RenderMode } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
 import { overlayAvailable } from '../ui/display-panel';
 import { schemeInfo } from '../viewer/scheme-info';
@@ -51,7 +51,7 @@ export interface UrlStateHost {
   linkProblems(problems: string[]): void;
 }
 
-/** The state of `viewer` as link parameters: only overlays that are on; level and camera only with a model. */
+/** The state of `viewer` as link parameters: only overlays not in their default state; level and camera only with a model. */
 export function paramsOfState(state: ViewerState, src: string | null, view: ViewState): ViewerParams {
   const params: ViewerParams = { scheme: state.scheme };
   if (src) params.src = src;
@@ -59,7 +59,8 @@ export function paramsOfState(state: ViewerState, src: string | null, view: View
   if (state.triangulate) params.triangulate = true;
   params.renderMode = state.renderMode;
   for (const name of OVERLAY_NAMES) {
-    if (state.overlays[name]) params.overlays = { ...params.overlays, [name]: true };
+    const on = state.overlays[name];
+    if (on !== OVERLAY_DEFAULTS[name]) params.overlays = { ...params.overlays, [name]: on };
   }
   if (state.levelCount > 0) params.view = view;
   return params;
@@ -192,9 +193,10 @@ export class UrlState {
       if (stale()) return;
       viewer.setRenderMode(params.renderMode ?? DEFAULT_RENDER_MODE);
       for (const name of OVERLAY_NAMES) {
-        const on = params.overlays?.[name] ?? false;
-        // As the checkbox: an overlay that cannot be drawn here is not switched on.
-        viewer.setOverlay(name, on && overlayAvailable(name, viewer.state));
+        const on = params.overlays?.[name] ?? OVERLAY_DEFAULTS[name];
+        // As the checkbox: an overlay that cannot be drawn here is not switched on, but one on by
+        // default (the creases) stays on for the tagged models to come.
+        viewer.setOverlay(name, on && (OVERLAY_DEFAULTS[name] || overlayAvailable(name, viewer.state)));
       }
       if (haveModel && params.view) viewer.setView(params.view);
     } finally {

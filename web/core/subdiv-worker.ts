@@ -4,7 +4,7 @@
  * page shows (the page holds handles), imports the core's TS API only
  * (never ./generated/), answers one request at a time and transfers results.
  */
-import type { Mesh, MeshFacts, RenderBuffers } from './mesh';
+import type { Mesh, MeshFacts, MeshTags, RenderBuffers } from './mesh';
 import { orientation } from './orientation';
 import {
   checkRules,
@@ -65,6 +65,7 @@ function levelData(level: KeptLevel, buffers: RenderBuffers, ms: number): LevelD
     facts,
     buffers,
     controlEdges: mesh.controlEdges.slice(),
+    tags: mesh.tags ? copyOfTags(mesh.tags) : null,
     ms,
     orientation: level.orientation,
   };
@@ -73,15 +74,33 @@ function levelData(level: KeptLevel, buffers: RenderBuffers, ms: number): LevelD
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
 function buffersOf(level: LevelData): Transferable[] {
   const { positions, boundingSphere, normals, triangles, edges, triangleFace } = level.buffers;
-  const arrays = [positions, boundingSphere, normals, triangles, edges, triangleFace, level.controlEdges];
+  const arrays: ArrayBufferView[] = [positions, boundingSphere, normals, triangles, edges, triangleFace];
+  arrays.push(level.controlEdges, ...tagArrays(level.tags));
   return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
 }
 
 function meshBuffers(mesh: Mesh): Transferable[] {
   const arrays: ArrayBufferView[] = [mesh.positions, mesh.faceSizes, mesh.faceIndices, mesh.controlEdges];
-  const { tags } = mesh;
-  if (tags) arrays.push(tags.creaseEdges, tags.creaseSharpness, tags.cornerVertices, tags.cornerSharpness, tags.holes);
+  arrays.push(...tagArrays(mesh.tags ?? null));
   return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
+}
+
+/** The typed arrays of a mesh's tags (none without tags). */
+function tagArrays(tags: MeshTags | null): ArrayBufferView[] {
+  if (!tags) return [];
+  return [tags.creaseEdges, tags.creaseSharpness, tags.cornerVertices, tags.cornerSharpness, tags.holes];
+}
+
+function copyOfTags(tags: MeshTags): MeshTags {
+  return {
+    ...tags,
+    creaseEdges: tags.creaseEdges.slice(),
+    creaseSharpness: tags.creaseSharpness.slice(),
+    cornerVertices: tags.cornerVertices.slice(),
+    cornerSharpness: tags.cornerSharpness.slice(),
+    holes: tags.holes.slice(),
+    notes: [...tags.notes],
+  };
 }
 
 function copyOf(mesh: Mesh): Mesh {
@@ -91,18 +110,7 @@ function copyOf(mesh: Mesh): Mesh {
     faceIndices: mesh.faceIndices.slice(),
     controlEdges: mesh.controlEdges.slice(),
   };
-  const { tags } = mesh;
-  if (tags) {
-    copy.tags = {
-      ...tags,
-      creaseEdges: tags.creaseEdges.slice(),
-      creaseSharpness: tags.creaseSharpness.slice(),
-      cornerVertices: tags.cornerVertices.slice(),
-      cornerSharpness: tags.cornerSharpness.slice(),
-      holes: tags.holes.slice(),
-      notes: [...tags.notes],
-    };
-  }
+  if (mesh.tags) copy.tags = copyOfTags(mesh.tags);
   return copy;
 }
 

@@ -5,7 +5,7 @@
  * buffers, control edges), transferred, not copied. A step sends a handle
  * and gets the new level back.
  */
-import type { Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
+import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { SubdivErrorCode } from './subdiv-error';
 
@@ -26,6 +26,8 @@ export interface LevelData {
   buffers: RenderBuffers;
   /** The level's marked control edges (vertex index pairs; may be empty). */
   controlEdges: Uint32Array;
+  /** The level's creases, corners and holes (OpenSubdiv's tags, a copy), or null when it has none. */
+  tags: MeshTags | null;
   /** Milliseconds the core spent on the step, its facts and render buffers included (0 for a loaded mesh). */
   ms: number;
   /**

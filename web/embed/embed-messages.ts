@@ -7,7 +7,7 @@
  * Commands: `load` ({ src } or { text, name }), `set-scheme` ({ scheme }),
  * `subdivide`, `set-level` ({ level }), `set-view` ({ view }: the nine-number
  * string or { position, target, up }), `set-render-mode` ({ mode }),
- * `set-overlay` ({ overlay: control-mesh, control-edges or bbox; on }),
+ * `set-overlay` ({ overlay: control-mesh, control-edges, bbox or creases; on }),
  * `set-triangulate` ({ on }).
  * Events: `ready`, `load`, `level-change`, `error`, `progress`.
  */
@@ -97,7 +97,7 @@ export function checkCommand(data: unknown): Checked {
       }
       return {
         ok: false,
-        reason: 'set-overlay needs overlay (control-mesh, control-edges or bbox) and on (true or false)',
+        reason: 'set-overlay needs overlay (control-mesh, control-edges, bbox or creases) and on (true or false)',
       };
     case 'set-triangulate':
       if (typeof data.on === 'boolean') return { ok: true, command: { subdivlab: 'set-triangulate', on: data.on } };

@@ -4,7 +4,7 @@
  * is named in `problems`.
  */
 import type { SchemeName } from '../core/mesh';
-import { RENDER_MODES, type RenderMode } from '../render/render-mode';
+import { OVERLAY_DEFAULTS, type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
 import {
@@ -21,7 +21,7 @@ export interface EmbedState {
   scheme: SchemeName;
   levels: number;
   renderMode: RenderMode;
-  overlays: { control: boolean; curves: boolean; bbox: boolean };
+  overlays: Record<OverlayName, boolean>;
   triangulate: boolean;
   rules: string;
   view: ViewState | null;
@@ -37,13 +37,13 @@ export const DEFAULT_CONTROLS: ControlsMode = 'minimal';
 /** Reads the state from `attr(name)` (an element's getAttribute). */
 export function readEmbedState(attr: (name: string) => string | null): EmbedState {
   const problems: EmbedState['problems'] = [];
-  const flag = (name: string): boolean => {
+  const flag = (name: string, absent = false): boolean => {
     const value = attr(name);
-    if (value === null) return false;
+    if (value === null) return absent;
     const on = parseFlag(value);
     if (on === null)
       problems.push({ attribute: name, message: `${name} must be present (on) or absent, or 1/0; not "${value}".` });
-    return on ?? false;
+    return on ?? absent;
   };
   const schemeText = attr('scheme');
   let scheme: SchemeName = 'catmull-clark';
@@ -110,6 +110,8 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
       control: flag(OVERLAY_KEYS.control),
       curves: flag(OVERLAY_KEYS.curves),
       bbox: flag(OVERLAY_KEYS.bbox),
+      // On unless creases="0" (or off/false).
+      creases: flag(OVERLAY_KEYS.creases, OVERLAY_DEFAULTS.creases),
     },
     triangulate: flag('triangulate'),
     rules,

@@ -5,8 +5,8 @@
  * its default.
  */
 import type { SchemeName } from '../core/mesh';
-import type { RenderMode } from '../render/render-mode';
-import type { ControlsMode } from '../viewer/viewer-params';
+import { OVERLAY_DEFAULTS, type RenderMode } from '../render/render-mode';
+import { type ControlsMode, OVERLAY_KEYS } from '../viewer/viewer-params';
 import { type EmbedState, readEmbedState } from './embed-state';
 
 /** Every attribute of the element and the property that reflects it. */
@@ -18,6 +18,7 @@ const PROPERTIES = {
   'control-mesh': 'controlMesh',
   'control-edges': 'controlEdges',
   bbox: 'bbox',
+  creases: 'creases',
   triangulate: 'triangulate',
   rules: 'rules',
   view: 'view',
@@ -73,6 +74,13 @@ export class ViewerAttributes extends HTMLElement {
   set bbox(on: boolean) {
     this.setFlag('bbox', on);
   }
+  /** The level's creases and corners (OpenSubdiv's tags): on unless `creases="0"`. */
+  get creases(): boolean {
+    return this.readState().overlays.creases;
+  }
+  set creases(on: boolean) {
+    this.setFlag('creases', on);
+  }
   get triangulate(): boolean {
     return this.readState().triangulate;
   }
@@ -127,9 +135,13 @@ export class ViewerAttributes extends HTMLElement {
     return readEmbedState((name) => this.getAttribute(name));
   }
 
-  /** A boolean attribute: present when on. */
+  /**
+   * A boolean attribute: absent in its default state, else present when on
+   * and "0" when off (the creases overlay is on by default).
+   */
   protected setFlag(name: string, on: boolean): void {
-    if (on) this.setAttribute(name, '');
-    else this.removeAttribute(name);
+    const absent = name === OVERLAY_KEYS.creases ? OVERLAY_DEFAULTS.creases : false;
+    if (on === absent) this.removeAttribute(name);
+    else this.setAttribute(name, on ? '' : '0');
   }
 }

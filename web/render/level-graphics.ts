@@ -4,8 +4,20 @@
  * edges (so quads are drawn as quads, never as triangle pairs). Both share
  * one position attribute. Call dispose() when the level is dropped.
  */
-import { BackSide, BufferAttribute, BufferGeometry, DoubleSide, FrontSide, type Side, Sphere, Vector3 } from 'three';
-import type { RenderBuffers } from '../core/mesh';
+import {
+  BackSide,
+  BufferAttribute,
+  BufferGeometry,
+  Color,
+  DoubleSide,
+  Float32BufferAttribute,
+  FrontSide,
+  type Side,
+  Sphere,
+  Vector3,
+} from 'three';
+import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
+import type { MeshTags, RenderBuffers } from '../core/mesh';
 
 /**
  * Bytes of index one draw call takes at most: a larger surface or edge
@@ -29,6 +41,34 @@ function partsOf(whole: BufferGeometry, index: Uint32Array, per: number): Buffer
   return parts;
 }
 
+/** OpenSubdiv's infinite sharpness: 10 and above never decays. */
+export const INFINITELY_SHARP = 10;
+
+/**
+ * The colour of a sharpness: amber for a crease that fades within a level,
+ * through orange to red at 5 and more, a dark red when infinitely sharp.
+ */
+export function sharpnessColor(sharpness: number): Color {
+  if (sharpness >= INFINITELY_SHARP) return new Color(SHARPNESS_COLORS.infinite);
+  const t = Math.min(Math.max(sharpness, 0), 5) / 5;
+  return new Color(SHARPNESS_COLORS.weak).lerp(new Color(SHARPNESS_COLORS.strong), t);
+}
+
+export const SHARPNESS_COLORS = { weak: '#f59f00', strong: '#e03131', infinite: '#6b0f1a' } as const;
+
+/** The points `vertices` of a level, with the colour of its item's sharpness for each (`per` points an item). */
+function coloredPoints(positions: Float32Array, vertices: ArrayLike<number>, sharpness: ArrayLike<number>, per: 1 | 2) {
+  const xyz = new Float32Array(3 * vertices.length);
+  const rgb = new Float32Array(3 * vertices.length);
+  for (let i = 0; i < vertices.length; ++i) {
+    const v = vertices[i];
+    xyz.set(positions.subarray(3 * v, 3 * v + 3), 3 * i);
+    const c = sharpnessColor(sharpness[Math.floor(i / per)]);
+    rgb.set([c.r, c.g, c.b], 3 * i);
+  }
+  return { xyz, rgb };
+}
+
 export class LevelGraphics {
   /** Fanned polygons with the core's smooth vertex normals (flat shading is a material switch). */
   readonly surface: BufferGeometry;
@@ -40,6 +80,13 @@ export class LevelGraphics {
   readonly edgeParts: BufferGeometry[];
   /** The marked control edges of this level (null when the core marked none). */
   readonly curves: BufferGeometry | null;
+  /**
+   * The level's sharp edges as coloured segments a few pixels wide (three's
+   * fat lines: WebGL draws its own lines one pixel wide) and its sharp
+   * vertices as coloured points (null: none).
+   */
+  readonly creases: LineSegmentsGeometry | null;
+  readonly corners: BufferGeometry | null;
   /**
    * The faces the surface draws. A closed surface hides the faces turned
    * away from the camera behind those turned towards it, so only the latter
@@ -53,7 +100,12 @@ export class LevelGraphics {
    * `orientation`: +1 (−1) when the level is closed and its faces turn
    * outward (inward); 0 draws both sides.
    */
-  constructor(buffers: RenderBuffers, controlEdges: Uint32Array = new Uint32Array(0), orientation: -1 | 0 | 1 = 0) {
+  constructor(
+    buffers: RenderBuffers,
+    controlEdges: Uint32Array = new Uint32Array(0),
+    orientation: -1 | 0 | 1 = 0,
+    tags: MeshTags | null = null,
+  ) {
     this.side = orientation > 0 ? FrontSide : orientation < 0 ? BackSide : DoubleSide;
     const position = new BufferAttribute(buffers.positions, 3);
     this.surface = new BufferGeometry();
@@ -81,6 +133,20 @@ export class LevelGraphics {
       this.curves.setIndex(new BufferAttribute(controlEdges, 1));
       this.curves.boundingSphere = sphere.clone();
     }
+    this.creases = null;
+    this.corners = null;
+    if (tags && tags.creaseEdges.length > 0) {
+      const { xyz, rgb } = coloredPoints(buffers.positions, tags.creaseEdges, tags.creaseSharpness, 2);
+      this.creases = new LineSegmentsGeometry().setPositions(xyz).setColors(rgb);
+      this.creases.boundingSphere = sphere.clone();
+    }
+    if (tags && tags.cornerVertices.length > 0) {
+      const { xyz, rgb } = coloredPoints(buffers.positions, tags.cornerVertices, tags.cornerSharpness, 1);
+      this.corners = new BufferGeometry();
+      this.corners.setAttribute('position', new Float32BufferAttribute(xyz, 3));
+      this.corners.setAttribute('color', new Float32BufferAttribute(rgb, 3));
+      this.corners.boundingSphere = sphere.clone();
+    }
   }
 
   /** Bounding sphere of the surface. */
@@ -95,5 +161,7 @@ export class LevelGraphics {
     this.surface.dispose();
     this.edges.dispose();
     this.curves?.dispose();
+    this.creases?.dispose();
+    this.corners?.dispose();
   }
 }

@@ -16,11 +16,25 @@ export function nextRenderMode(mode: RenderMode): RenderMode {
 }
 
 /**
- * Overlays drawn with the surface: the level-0 edges, the bounding box, and
- * the control-edge curves (edges of the shown level that lie on level-0
- * edges, as the core marks them for primal schemes).
+ * Overlays drawn with the surface: the level-0 edges, the bounding box, the
+ * control-edge curves (edges of the shown level that lie on level-0 edges,
+ * as the core marks them for primal schemes), and the shown level's sharp
+ * edges and corners (OpenSubdiv's tags), coloured by sharpness.
  */
-export type OverlayName = 'control' | 'bbox' | 'curves';
+export type OverlayName = 'control' | 'bbox' | 'curves' | 'creases';
 
 /** All overlays, in display order. */
-export const OVERLAY_NAMES: readonly OverlayName[] = ['control', 'bbox', 'curves'];
+export const OVERLAY_NAMES: readonly OverlayName[] = ['control', 'bbox', 'curves', 'creases'];
+
+/**
+ * Each overlay when nothing says otherwise: a tagged file's creases are
+ * what its author wants seen, so they show until switched off; the others
+ * wait to be switched on. Links and attributes name an overlay only when
+ * it differs from this.
+ */
+export const OVERLAY_DEFAULTS: Readonly<Record<OverlayName, boolean>> = {
+  control: false,
+  bbox: false,
+  curves: false,
+  creases: true,
+};

@@ -19,14 +19,19 @@ import {
   Mesh,
   MeshLambertMaterial,
   PerspectiveCamera,
+  Points,
+  PointsMaterial,
   Quaternion,
   Scene,
   Sphere,
   Vector3,
 } from 'three';
 import { TrackballControls } from 'three/addons/controls/TrackballControls.js';
+import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
+import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
+import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import type { LevelGraphics } from './level-graphics';
-import type { OverlayName, RenderMode } from './render-mode';
+import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
 import type { ViewState } from './view-state';
 
@@ -93,14 +98,14 @@ export class SceneView {
   private readonly edgeLines: LineSegments;
   private readonly controlLines: LineSegments;
   private readonly curveLines: LineSegments;
+  private readonly creaseLines: LineSegments2;
+  private readonly cornerPoints: Points<BufferGeometry, PointsMaterial>;
   private readonly smoothMaterial: MeshLambertMaterial;
   private readonly flatMaterial: MeshLambertMaterial;
   private bboxHelper: Box3Helper | null = null;
-  private readonly overlays = new Map<OverlayName, boolean>([
-    ['control', false],
-    ['bbox', false],
-    ['curves', false],
-  ]);
+  private readonly overlays = new Map<OverlayName, boolean>(
+    Object.entries(OVERLAY_DEFAULTS) as [OverlayName, boolean][],
+  );
   private mode: RenderMode = 'smooth';
   private radius = 1;
   private dirty = true;
@@ -150,7 +155,25 @@ export class SceneView {
     this.controlLines.renderOrder = 1;
     this.curveLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.curves }));
     this.curveLines.renderOrder = 2;
-    for (const object of [this.surface, this.edgeLines, this.controlLines, this.curveLines]) {
+    // Sharp edges and corners (their colours say how sharp): drawn over everything else.
+    this.creaseLines = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({ vertexColors: true, linewidth: 4 }),
+    );
+    this.creaseLines.renderOrder = 3;
+    this.cornerPoints = new Points(
+      new BufferGeometry(),
+      new PointsMaterial({ vertexColors: true, size: 12, sizeAttenuation: false }),
+    );
+    this.cornerPoints.renderOrder = 4;
+    for (const object of [
+      this.surface,
+      this.edgeLines,
+      this.controlLines,
+      this.curveLines,
+      this.creaseLines,
+      this.cornerPoints,
+    ]) {
       object.visible = false;
       object.frustumCulled = false;
       this.scene.add(object);
@@ -203,9 +226,13 @@ export class SceneView {
       }
       showParts(this.edgeLines, graphics.edgeParts);
       if (graphics.curves) this.curveLines.geometry = graphics.curves;
+      if (graphics.creases) this.creaseLines.geometry = graphics.creases;
+      if (graphics.corners) this.cornerPoints.geometry = graphics.corners;
     }
     this.surface.userData.hasLevel = graphics !== null;
     this.curveLines.userData.hasLevel = graphics?.curves != null;
+    this.creaseLines.userData.hasLevel = graphics?.creases != null;
+    this.cornerPoints.userData.hasLevel = graphics?.corners != null;
     this.applyVisibility();
   }
 
@@ -415,6 +442,8 @@ export class SceneView {
     (this.edgeLines.material as LineBasicMaterial).dispose();
     (this.controlLines.material as LineBasicMaterial).dispose();
     (this.curveLines.material as LineBasicMaterial).dispose();
+    this.creaseLines.material.dispose();
+    (this.cornerPoints.material as PointsMaterial).dispose();
     this.canvas.remove();
   }
 
@@ -424,6 +453,8 @@ export class SceneView {
     this.edgeLines.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
     this.controlLines.visible = this.controlLines.userData.hasLevel === true && this.overlay('control');
     this.curveLines.visible = this.curveLines.userData.hasLevel === true && this.overlay('curves');
+    this.creaseLines.visible = this.creaseLines.userData.hasLevel === true && this.overlay('creases');
+    this.cornerPoints.visible = this.cornerPoints.userData.hasLevel === true && this.overlay('creases');
     if (this.bboxHelper) this.bboxHelper.visible = this.overlay('bbox');
     this.dirty = true;
   }

@@ -17,13 +17,16 @@ const OVERLAYS: readonly { name: OverlayName; label: string; key: string }[] = [
   { name: 'control', label: 'Control mesh (level 0 edges)', key: 'c' },
   { name: 'bbox', label: 'Bounding box', key: 'b' },
   { name: 'curves', label: 'Control-edge curves', key: 'e' },
+  { name: 'creases', label: 'Creases and corners', key: 'k' },
 ];
 
 /**
  * Whether overlay `name` can be switched on for `state`: the curves exist
- * only where the core marked control edges (primal schemes).
+ * only where the core marked control edges (primal schemes), the creases
+ * where the shown level has sharp edges or corners.
  */
 export function overlayAvailable(name: OverlayName, state: ViewerState): boolean {
+  if (name === 'creases') return state.tags !== null && state.tags.creases + state.tags.corners > 0;
   if (name !== 'curves') return true;
   return state.facts !== null && state.facts.controlEdges > 0;
 }

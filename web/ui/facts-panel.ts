@@ -1,7 +1,7 @@
 /** Facts of the shown level, as the core computed them. */
 
 import type { MeshFacts } from '../core/mesh';
-import type { ViewerState } from '../viewer/subdiv-viewer';
+import type { TagSummary, ViewerState } from '../viewer/subdiv-viewer';
 import { el } from './dom';
 
 const ROWS: readonly { key: string; label: string; value: (f: MeshFacts) => string }[] = [
@@ -36,12 +36,32 @@ function controlEdges(f: MeshFacts, level: number): string {
   return f.controlEdges > 0 ? String(f.controlEdges) : '–';
 }
 
+const BOUNDARY_NAMES: Record<TagSummary['boundary'], string> = {
+  edge: 'edges sharp',
+  'edge-and-corner': 'edges and corners sharp',
+  none: 'border faces holes',
+};
+
+/** "4 creases, 1 corner, 2 holes" (and the border mode and crease method when not the defaults), or "–". */
+export function tagText(tags: TagSummary | null): string {
+  if (!tags) return '–';
+  const count = (n: number, one: string) => `${n} ${one}${n === 1 ? '' : 's'}`;
+  const parts: string[] = [];
+  if (tags.creases > 0) parts.push(count(tags.creases, 'crease'));
+  if (tags.corners > 0) parts.push(count(tags.corners, 'corner'));
+  if (tags.holes > 0) parts.push(count(tags.holes, 'hole'));
+  if (tags.boundary !== 'edge') parts.push(`border: ${BOUNDARY_NAMES[tags.boundary]}`);
+  if (tags.creaseMethod !== 'uniform') parts.push('Chaikin creasing');
+  return parts.length > 0 ? parts.join(', ') : 'none';
+}
+
 export class FactsPanel {
   readonly element: HTMLElement;
   private readonly cells = new Map<string, HTMLElement>();
   private readonly model: HTMLElement;
   private readonly level: HTMLElement;
   private readonly controlEdges: HTMLElement;
+  private readonly tags: HTMLElement;
   private readonly time: HTMLElement;
 
   constructor() {
@@ -55,6 +75,7 @@ export class FactsPanel {
     this.level = row('level', 'Level');
     for (const { key, label } of ROWS) this.cells.set(key, row(key, label));
     this.controlEdges = row('control-edges', 'Control edges');
+    this.tags = row('tags', 'Tags');
     this.time = row('time', 'Last step');
     this.element = el(
       'section',
@@ -73,6 +94,8 @@ export class FactsPanel {
       if (cell) cell.textContent = state.facts ? value(state.facts) : '–';
     }
     this.controlEdges.textContent = state.facts ? controlEdges(state.facts, state.level) : '–';
+    this.tags.textContent = tagText(state.tags);
+    this.tags.title = state.tags?.notes.join('\n') ?? '';
     this.time.textContent = state.stepMs === null ? '–' : `${state.stepMs.toFixed(1)} ms`;
   }
 }

@@ -10,7 +10,17 @@
  * with SubdivError / CancelledError / Error; the viewer never touches the
  * DOM outside its container, so an app shell or an embed adds the panels.
  */
-import type { Mesh, MeshFacts, MeshFormat, SchemeName, SizePrediction, SubdivideOptions } from '../core/mesh';
+import type {
+  BoundaryInterpolation,
+  CreaseMethod,
+  Mesh,
+  MeshFacts,
+  MeshFormat,
+  MeshTags,
+  SchemeName,
+  SizePrediction,
+  SubdivideOptions,
+} from '../core/mesh';
 import {
   CancelledError,
   type CoreSession,
@@ -68,6 +78,29 @@ export interface DrawnLevel {
 }
 
 /** A snapshot of the viewer, for panels and tests. */
+/** A level's tags as the facts panel lists them. */
+export interface TagSummary {
+  creases: number;
+  corners: number;
+  holes: number;
+  boundary: BoundaryInterpolation;
+  creaseMethod: CreaseMethod;
+  /** The file's tags the core read but does not apply (level 0 only). */
+  notes: string[];
+}
+
+function tagSummary(tags: MeshTags | null): TagSummary | null {
+  if (!tags) return null;
+  return {
+    creases: tags.creaseSharpness.length,
+    corners: tags.cornerSharpness.length,
+    holes: tags.holes.length,
+    boundary: tags.boundary,
+    creaseMethod: tags.creaseMethod,
+    notes: tags.notes,
+  };
+}
+
 export interface ViewerState {
   modelName: string | null;
   scheme: SchemeName;
@@ -76,6 +109,8 @@ export interface ViewerState {
   /** Number of computed levels (levels 0..levelCount−1 exist). */
   levelCount: number;
   facts: MeshFacts | null;
+  /** The shown level's OpenSubdiv tags, counted (null: it has none). */
+  tags: TagSummary | null;
   /** Milliseconds of the step that produced the shown level (null at level 0). */
   stepMs: number | null;
   renderMode: RenderMode;
@@ -155,12 +190,14 @@ export class SubdivViewer {
       level: this.current,
       levelCount: this.levels.length,
       facts: level?.data.facts ?? null,
+      tags: tagSummary(level?.data.tags ?? null),
       stepMs: level && this.current > 0 ? level.data.ms : null,
       renderMode: this.view.renderMode,
       overlays: {
         control: this.view.overlay('control'),
         bbox: this.view.overlay('bbox'),
         curves: this.view.overlay('curves'),
+        creases: this.view.overlay('creases'),
       },
       busy: this.busyState,
     };
@@ -517,7 +554,12 @@ export class SubdivViewer {
 
   private graphicsOf(level: Level): LevelGraphics {
     if (!level.graphics)
-      level.graphics = new LevelGraphics(level.data.buffers, level.data.controlEdges, level.data.orientation);
+      level.graphics = new LevelGraphics(
+        level.data.buffers,
+        level.data.controlEdges,
+        level.data.orientation,
+        level.data.tags,
+      );
     return level.graphics;
   }
 

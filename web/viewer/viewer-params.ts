@@ -51,6 +51,7 @@ export const OVERLAY_KEYS = {
   control: 'control-mesh',
   curves: 'control-edges',
   bbox: 'bbox',
+  creases: 'creases',
 } as const satisfies Record<OverlayName, string>;
 
 /** "1", "true", "" (a bare attribute) or "on" mean on; "0", "false", "off" mean off. */

@@ -1,0 +1,40 @@
+/**
+ * A file with OpenSubdiv's tags: its creases and corners drawn in the
+ * colours of their sharpness, counted in the facts level by level as the
+ * sharpness decays, and the overlay switched off and on with K.
+ */
+import { readFileSync } from 'node:fs';
+import { expect, test } from './fixtures';
+
+// Creases 4-5 and 5-7 of sharpness 2, 0-1 and 1-3 of 3.5; vertex 6 a corner of 4.25.
+const CREASED_CUBE = readFileSync('tests/fixtures/cube-creased.obj', 'utf8');
+
+test('a creased cube: tags in the facts, creases drawn, decaying level by level', async ({ app }) => {
+  await app.open();
+  await app.load('cube-creased.obj', CREASED_CUBE);
+  await expect(app.byTestId('facts.tags')).toHaveText('4 creases, 1 corner');
+  await expect(app.byTestId('controls.overlay-creases')).toBeChecked();
+  await app.snapshot('creases-0');
+  // Each step halves every sharp edge and takes one from its sharpness:
+  // level 1 has the eight halves (1 and 2.5), level 2 only the halves of the
+  // 2.5 ones (now 1.5), the corner 4.25 - 2.
+  await app.subdivide();
+  await expect(app.byTestId('facts.tags')).toHaveText('8 creases, 1 corner');
+  await app.subdivide();
+  await expect(app.byTestId('facts.tags')).toHaveText('8 creases, 1 corner');
+  expect((await app.facts()).faces).toBe(96);
+  await app.snapshot('creases-2');
+  const drawn = await app.canvasPixels();
+  // K hides them: the picture changes, and comes back with K again.
+  await app.page.keyboard.press('k');
+  await expect(app.byTestId('controls.overlay-creases')).not.toBeChecked();
+  await expect.poll(async () => (await app.canvasPixels()).equals(drawn)).toBe(false);
+  await app.snapshot('creases-2-hidden');
+  await app.page.keyboard.press('k');
+  await expect(app.byTestId('controls.overlay-creases')).toBeChecked();
+  // Loop refuses quads, Doo-Sabin has no creasing rules: its levels carry no tags.
+  await app.scrubTo(0);
+  await app.chooseScheme('doo-sabin');
+  await app.subdivide();
+  await expect(app.byTestId('facts.tags')).toHaveText('–');
+});
