@@ -4,6 +4,8 @@
  * sharpness decays, and the overlay switched off and on with K.
  */
 import { readFileSync } from 'node:fs';
+import { readFile } from 'node:fs/promises';
+import { sharpnessColor } from '../../web/render/level-graphics';
 import { expect, test } from './fixtures';
 
 // Creases 4-5 and 5-7 of sharpness 2, 0-1 and 1-3 of 3.5; vertex 6 a corner of 4.25.
@@ -24,6 +26,15 @@ test('a creased cube: tags in the facts, creases drawn, decaying level by level'
   await expect(app.byTestId('facts.tags')).toHaveText('8 creases, 1 corner');
   expect((await app.facts()).faces).toBe(96);
   await app.snapshot('creases-2');
+  // The SVG has them too: the 8 halves of sharpness 1.5, one colour (red at 5, amber at 0:
+  // 30 % of the way), in front of or behind the faces.
+  await app.byTestId('export-panel').locator('summary').click();
+  const svg = await readFile(await (await app.download('export.svg')).path(), 'utf8');
+  const paths = [...svg.matchAll(/<path id="creases-0(-back)?"[^>]* stroke="([^"]+)"[^>]* d="([^"]*)"/g)];
+  expect(paths.length).toBe(2);
+  expect(paths.reduce((n, p) => n + p[3].split('M').length - 1, 0)).toBe(8);
+  expect(svg).not.toContain('id="creases-1"');
+  expect(paths[0][2]).toBe(`#${sharpnessColor(1.5).getHexString()}`);
   const drawn = await app.canvasPixels();
   // K hides them: the picture changes, and comes back with K again.
   await app.page.keyboard.press('k');

@@ -2,7 +2,7 @@
  * SVG of the current view, drawn as a painter would: the polygons that face
  * the camera, sorted back to front by their centroid's depth, each filled
  * with a flat Lambert shade and stroked with its edges, then the control-mesh
- * overlay and the control-edge curves. A line that lies on no camera-facing
+ * overlay, the control-edge curves and the creases (coloured by sharpness). A line that lies on no camera-facing
  * polygon of its mesh is drawn before the faces, so that the surface covers
  * it where it passes behind, as the depth-tested view does; the other lines
  * go on top. Polygons stay polygons (one <polygon> per face). three's
@@ -40,6 +40,8 @@ export interface SvgExportInput {
   control?: LineSet | null;
   /** The shown level's marked control edges, when the control-edge curves are shown. */
   curves?: LineSet | null;
+  /** The shown level's sharp edges, a set per colour (their sharpness's), when the creases are shown. */
+  creases?: { lines: LineSet; color: string }[];
   /** Fill the background (false: transparent). */
   background: boolean;
 }
@@ -112,14 +114,15 @@ export function exportSvg(input: SvgExportInput): string {
   if (input.background) out.push(`<rect width="${width}" height="${height}" fill="${VIEW_COLORS.background}"/>`);
   // Lines behind the surface first (ids ending in -back), the faces over them, then the lines in front.
   const overlays = [
-    { lines: input.curves, id: 'control-curves', color: VIEW_COLORS.curves },
-    { lines: input.control, id: 'control-mesh', color: VIEW_COLORS.control },
-  ].flatMap(({ lines, id, color }) => (lines ? [{ ...splitByFacing(lines, camera), id, color }] : []));
-  for (const o of overlays) out.push(linePath(o.back, `${o.id}-back`, o.color, camera, width, height));
+    { lines: input.curves, id: 'control-curves', color: VIEW_COLORS.curves, width: 1.2 },
+    { lines: input.control, id: 'control-mesh', color: VIEW_COLORS.control, width: 1.2 },
+    ...(input.creases ?? []).map(({ lines, color }, i) => ({ lines, id: `creases-${i}`, color, width: 3 })),
+  ].flatMap(({ lines, id, color, width: w }) => (lines ? [{ ...splitByFacing(lines, camera), id, color, w }] : []));
+  for (const o of overlays) out.push(linePath(o.back, `${o.id}-back`, o.color, camera, width, height, o.w));
   out.push(`<g id="faces" stroke="${VIEW_COLORS.edges}" stroke-width="0.6" stroke-linejoin="round">`);
   for (const f of faces) out.push(`<polygon points="${f.points}" fill="${f.fill}"/>`);
   out.push('</g>');
-  for (const o of overlays) out.push(linePath(o.front, o.id, o.color, camera, width, height));
+  for (const o of overlays) out.push(linePath(o.front, o.id, o.color, camera, width, height, o.w));
   out.push('</svg>');
   return `${out.join('\n')}\n`;
 }
@@ -192,6 +195,7 @@ function linePath(
   camera: PerspectiveCamera,
   width: number,
   height: number,
+  strokeWidth: number,
 ): string {
   const v = new Vector3();
   const project = (i: number): string => {
@@ -202,5 +206,5 @@ function linePath(
   for (let e = 0; e + 1 < lines.edges.length; e += 2) {
     d.push(`M${project(lines.edges[e])}L${project(lines.edges[e + 1])}`);
   }
-  return `<path id="${id}" fill="none" stroke="${color}" stroke-width="1.2" d="${d.join('')}"/>`;
+  return `<path id="${id}" fill="none" stroke="${color}" stroke-width="${strokeWidth}" stroke-linecap="round" d="${d.join('')}"/>`;
 }

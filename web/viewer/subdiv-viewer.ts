@@ -31,10 +31,10 @@ import {
   type WorkerClient,
 } from '../core/worker-client';
 import { fanPolygons } from '../render/fan-polygons';
-import { LevelGraphics } from '../render/level-graphics';
+import { LevelGraphics, sharpnessColor } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
-import { exportSvg } from '../render/svg-export';
+import { exportSvg, type LineSet } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
 
@@ -356,9 +356,9 @@ export class SubdivViewer {
     return this.view.exportPng(scale, transparent);
   }
 
-  /** SVG of the view: camera-facing polygons back to front, and the control mesh when shown. */
+  /** SVG of the view: camera-facing polygons back to front, and the overlays shown (the creases but their corners). */
   exportSvg(transparent = false): string {
-    const { buffers, controlEdges } = this.requireLevel().data;
+    const { buffers, controlEdges, tags } = this.requireLevel().data;
     const base = this.levels[0].data.buffers;
     // The polygons as the core fanned them: the shown level's, in float32.
     const mesh = { positions: buffers.positions, ...fanPolygons(buffers) };
@@ -369,12 +369,26 @@ export class SubdivViewer {
       this.view.overlay('curves') && controlEdges.length > 0
         ? { positions: buffers.positions, edges: controlEdges, faces: mesh }
         : null;
+    // The sharp edges, one set per colour.
+    const creases: { lines: LineSet; color: string }[] = [];
+    if (this.view.overlay('creases') && tags && tags.creaseEdges.length > 0) {
+      const byColor = new Map<string, number[]>();
+      for (let i = 0; i < tags.creaseSharpness.length; ++i) {
+        const color = `#${sharpnessColor(tags.creaseSharpness[i]).getHexString()}`;
+        const edges = byColor.get(color) ?? [];
+        edges.push(tags.creaseEdges[2 * i], tags.creaseEdges[2 * i + 1]);
+        byColor.set(color, edges);
+      }
+      for (const [color, edges] of byColor)
+        creases.push({ lines: { positions: buffers.positions, edges, faces: mesh }, color });
+    }
     return exportSvg({
       mesh,
       camera: this.view.camera,
       ...this.view.size,
       control,
       curves,
+      creases,
       background: !transparent,
     });
   }
