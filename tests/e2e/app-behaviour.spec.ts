@@ -27,6 +27,8 @@ test('the gallery opens sample meshes', async ({ app }) => {
   });
   expect(await pick('open-grid', 'open-grid.off')).toMatchObject({ vertices: 16, faces: 9, boundaries: 1 });
   expect(await pick('torus', 'torus.off')).toMatchObject({ genus: 1, boundaries: 0, components: 1 });
+  expect(await pick('cube-creased', 'cube-creased.obj')).toMatchObject({ vertices: 8, faces: 6 });
+  await expect(app.byTestId('facts.tags')).toHaveText('6 creases, 1 corner');
   const grid = await pick('open-grid', 'open-grid.off');
   // Catmull-Clark on the open 3×3 grid: a 6×6 grid, then 12×12.
   await app.subdivide();

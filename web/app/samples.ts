@@ -3,6 +3,12 @@ import type { Sample } from '../ui/gallery';
 /** The gallery's sample meshes, served from public/meshes/ (CGAL's are extracted there at set-up). */
 export const SAMPLES: readonly Sample[] = [
   { id: 'cube', path: 'meshes/cube.off', label: 'Cube', note: '6 quads, closed' },
+  {
+    id: 'cube-creased',
+    path: 'meshes/cube-creased.obj',
+    label: 'Creased cube',
+    note: 'sharp, semi-sharp and fading edges, a corner',
+  },
   { id: 'tetrahedron', path: 'meshes/tetrahedron.off', label: 'Tetrahedron', note: '4 triangles, closed' },
   { id: 'octahedron', path: 'meshes/octahedron.off', label: 'Octahedron', note: '8 triangles, closed' },
   { id: 'icosahedron', path: 'meshes/icosahedron.off', label: 'Icosahedron', note: '20 triangles, closed' },
