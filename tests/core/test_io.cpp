@@ -12,17 +12,10 @@
 
 #include "core/mesh_build.h"
 #include "core/mesh_io.h"
+#include "fixture_text.h"
 
 namespace subdivlab {
 namespace {
-
-std::string fixture(const std::string& name) {
-  std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
-  EXPECT_TRUE(in.good()) << name;
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 Mesh_buffers read_ok(const std::string& text, Mesh_format format) {
   Result<Mesh_buffers> r = read_mesh(text, format);
@@ -49,7 +42,7 @@ const std::string tetra_faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
 // ------------------------------------------------------------ valid OFF
 
 TEST(IoOff, ReadsTheCubeFixture) {
-  const Mesh_buffers m = read_ok(fixture("cube.off"), Mesh_format::off);
+  const Mesh_buffers m = read_ok(fixture_text("cube.off"), Mesh_format::off);
   EXPECT_EQ(m.vertex_count(), 8u);
   EXPECT_EQ(m.face_count(), 6u);
   EXPECT_EQ(m.face_indices.size(), 24u);
@@ -74,7 +67,7 @@ TEST(IoOff, ReadsEveryFixture) {
         Expect{"mixed-open.off", 13, 9, 31},
         Expect{"rhombicuboctahedron.off", 24, 26, 96},
         Expect{"two-tetrahedra.off", 8, 8, 24}}) {
-    const Mesh_buffers m = read_ok(fixture(e.name), Mesh_format::off);
+    const Mesh_buffers m = read_ok(fixture_text(e.name), Mesh_format::off);
     EXPECT_EQ(m.vertex_count(), e.v) << e.name;
     EXPECT_EQ(m.face_count(), e.f) << e.name;
     EXPECT_EQ(m.face_indices.size(), e.corners) << e.name;
@@ -375,7 +368,7 @@ TEST(IoOffErrors, NonManifoldVertex) {
 
 TEST(IoOffErrors, InconsistentOrientation) {
   // The cube with its last face flipped.
-  std::string text = fixture("cube.off");
+  std::string text = fixture_text("cube.off");
   const std::string last = "4 6 4 5 7\n";
   ASSERT_EQ(text.substr(text.size() - last.size()), last);
   text.replace(text.size() - last.size(), last.size(), "4 7 5 4 6\n");
@@ -444,14 +437,15 @@ TEST(IoOffErrors, HugeDeclaredCountsDoNotAllocate) {
 TEST(IoOffErrors, ModuleKeepsWorkingAfterAnError) {
   EXPECT_FALSE(
       read_mesh("OFF\n1 1 0\nnan 0 0\n3 0 0 0\n", Mesh_format::off).ok());
-  EXPECT_EQ(read_ok(fixture("cube.off"), Mesh_format::off).face_count(), 6u);
+  EXPECT_EQ(read_ok(fixture_text("cube.off"), Mesh_format::off).face_count(),
+            6u);
 }
 
 // ------------------------------------------------------------ valid OBJ
 
 TEST(IoObj, ReadsTheCubeFixtureWithTextureAndNormalIndices) {
-  const Mesh_buffers obj = read_ok(fixture("cube.obj"), Mesh_format::obj);
-  const Mesh_buffers off = read_ok(fixture("cube.off"), Mesh_format::off);
+  const Mesh_buffers obj = read_ok(fixture_text("cube.obj"), Mesh_format::obj);
+  const Mesh_buffers off = read_ok(fixture_text("cube.off"), Mesh_format::off);
   EXPECT_EQ(obj.positions, off.positions);
   EXPECT_EQ(obj.face_sizes, off.face_sizes);
   EXPECT_EQ(obj.face_indices, off.face_indices);
@@ -655,7 +649,7 @@ TEST(IoWrite, ReadBuildToBuffersGivesBackTheFileExactly) {
   for (const char* name :
        {"cube.off", "torus-tri.off", "mixed-open.off",
         "rhombicuboctahedron.off", "grid-open.off", "two-tetrahedra.off"}) {
-    const Mesh_buffers in = read_ok(fixture(name), Mesh_format::off);
+    const Mesh_buffers in = read_ok(fixture_text(name), Mesh_format::off);
     Mesh mesh;
     ASSERT_TRUE(build_mesh(in, mesh).ok()) << name;
     const Mesh_buffers out = to_buffers(mesh);
@@ -673,7 +667,7 @@ TEST(IoWrite, RoundTripOfEveryFixtureIsExact) {
        {"tetrahedron.off", "cube.off", "octahedron.off", "icosahedron.off",
         "torus-quad.off", "torus-tri.off", "grid-open.off", "disk-tri.off",
         "mixed-open.off", "rhombicuboctahedron.off", "two-tetrahedra.off"}) {
-    const Mesh_buffers m = read_ok(fixture(name), Mesh_format::off);
+    const Mesh_buffers m = read_ok(fixture_text(name), Mesh_format::off);
     expect_round_trip(m, Mesh_format::off, std::string(name) + " as OFF");
     expect_round_trip(m, Mesh_format::obj, std::string(name) + " as OBJ");
   }
@@ -752,7 +746,7 @@ TEST(IoInvalidFixtures, EachFileReportsItsProblem) {
                                    ? Mesh_format::obj
                                    : Mesh_format::off;
     const Result<Mesh_buffers> r =
-        read_mesh(fixture("invalid/" + name), format);
+        read_mesh(fixture_text("invalid/" + name), format);
     EXPECT_EQ(r.status.code, e.code) << name << ": " << r.status.message;
     EXPECT_EQ(r.status.line, e.line) << name;
     EXPECT_EQ(r.status.message, e.message) << name;

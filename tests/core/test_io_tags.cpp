@@ -14,17 +14,10 @@
 #include <vector>
 
 #include "core/mesh_io.h"
+#include "fixture_text.h"
 
 namespace subdivlab {
 namespace {
-
-std::string fixture(const std::string& name) {
-  std::ifstream in(std::string(FIXTURES_DIR) + "/" + name, std::ios::binary);
-  EXPECT_TRUE(in.good()) << name;
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// The cube [0,1]^3 as in cube-creased.obj: 8 "v" lines, then 6 "f" lines
 /// (lines 1-14); a tag appended to it is on line 15. Its edges: 0-1, 0-2,
@@ -212,7 +205,8 @@ TEST(IoTags, ManyUnappliedTagsGiveAHundredNotesAndOneLineForTheRest) {
 }
 
 TEST(IoTags, TheFixturesHoldWhatTheirCommentsSay) {
-  const Mesh_tags cube = tags_of(fixture("cube-creased.obj"), Mesh_format::obj);
+  const Mesh_tags cube =
+      tags_of(fixture_text("cube-creased.obj"), Mesh_format::obj);
   EXPECT_EQ(cube.crease_edges, (Indices{4, 5, 5, 7, 0, 1, 1, 3}));
   EXPECT_EQ(cube.crease_sharpness, (Floats{2.0f, 2.0f, 3.5f, 3.5f}));
   EXPECT_EQ(cube.corner_vertices, (Indices{6}));
@@ -222,17 +216,18 @@ TEST(IoTags, TheFixturesHoldWhatTheirCommentsSay) {
   EXPECT_FALSE(cube.crease_method_given);
 
   const Mesh_tags patch =
-      tags_of(fixture("quad-patch-corners.obj"), Mesh_format::obj);
+      tags_of(fixture_text("quad-patch-corners.obj"), Mesh_format::obj);
   EXPECT_EQ(patch.corner_vertices, (Indices{0, 3, 12, 15}));
   EXPECT_EQ(patch.corner_sharpness, (Floats{10, 10, 10, 10}));
   EXPECT_EQ(patch.boundary, Boundary_interpolation::edge_and_corner);
 
-  const Mesh_tags torus = tags_of(fixture("torus-holed.obj"), Mesh_format::obj);
+  const Mesh_tags torus =
+      tags_of(fixture_text("torus-holed.obj"), Mesh_format::obj);
   EXPECT_EQ(torus.holes, (Indices{3, 14}));
   EXPECT_TRUE(torus.crease_edges.empty());
 
   const Mesh_tags tetra =
-      tags_of(fixture("tetra-crease.obj"), Mesh_format::obj);
+      tags_of(fixture_text("tetra-crease.obj"), Mesh_format::obj);
   EXPECT_EQ(tetra.crease_edges, (Indices{0, 1}));
   EXPECT_EQ(tetra.crease_sharpness, (Floats{1.5f}));
   EXPECT_EQ(tetra.crease_method, Crease_method::chaikin);
@@ -242,7 +237,7 @@ TEST(IoTags, TheFixturesHoldWhatTheirCommentsSay) {
 TEST(IoTags, FastAndGeneralPathsReadTheSameTags) {
   for (const char* name : {"cube-creased.obj", "quad-patch-corners.obj",
                            "torus-holed.obj", "tetra-crease.obj"}) {
-    const std::string text = fixture(name);
+    const std::string text = fixture_text(name);
     const Result<Mesh_buffers> fast = read_mesh(text, Mesh_format::obj);
     const Result<Mesh_buffers> general =
         detail::read_mesh_general(text, Mesh_format::obj);
@@ -580,7 +575,8 @@ TEST(IoTagsWrite, RoundTripsAreExactInObjAndOff) {
 TEST(IoTagsWrite, RoundTripOfEveryTaggedFixtureIsExact) {
   for (const char* name : {"cube-creased.obj", "quad-patch-corners.obj",
                            "torus-holed.obj", "tetra-crease.obj"}) {
-    const Mesh_buffers m = read_mesh(fixture(name), Mesh_format::obj).value;
+    const Mesh_buffers m =
+        read_mesh(fixture_text(name), Mesh_format::obj).value;
     for (const Mesh_format format : {Mesh_format::obj, Mesh_format::off}) {
       const Result<Mesh_buffers> back =
           read_mesh(write_mesh(m, format), format);
@@ -593,7 +589,7 @@ TEST(IoTagsWrite, RoundTripOfEveryTaggedFixtureIsExact) {
 
 TEST(IoTagsWrite, ManyHolesGoSixteenToALine) {
   Mesh_buffers m =
-      read_mesh(fixture("torus-holed.obj"), Mesh_format::obj).value;
+      read_mesh(fixture_text("torus-holed.obj"), Mesh_format::obj).value;
   m.tags.holes.clear();
   for (std::uint32_t f = 0; f < 20; ++f) m.tags.holes.push_back(f);
   const std::string text = write_mesh(m, Mesh_format::obj);

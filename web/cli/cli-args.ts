@@ -65,6 +65,18 @@ function outputFormat(path: string): MeshFormat {
   return match[1].toLowerCase() as MeshFormat;
 }
 
+/** The options of a command line that gives none (help, info). */
+const NO_OPTIONS = {
+  levels: 0,
+  triangulate: false,
+  rule: null,
+  fixedBoundary: false,
+  creaseMethod: null,
+  boundary: null,
+  output: null,
+  stats: false,
+} as const satisfies Partial<CliArgs>;
+
 /** Parses argv (without node and the script). Throws UsageError; scheme names are checked later. */
 export function parseCliArgs(argv: string[]): CliArgs {
   let parsed: ReturnType<typeof parse>;
@@ -75,22 +87,7 @@ export function parseCliArgs(argv: string[]): CliArgs {
   }
   const { values, positionals } = parsed;
   const help = values.help === true;
-  if (help) {
-    return {
-      command: 'subdivide',
-      input: '',
-      scheme: '',
-      levels: 0,
-      triangulate: false,
-      rule: null,
-      fixedBoundary: false,
-      creaseMethod: null,
-      boundary: null,
-      output: null,
-      stats: false,
-      help,
-    };
-  }
+  if (help) return { ...NO_OPTIONS, command: 'subdivide', input: '', scheme: '', help };
   if (positionals[0] === 'info') return infoArgs(parsed);
   if (positionals.length !== 1) {
     throw new UsageError(positionals.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
@@ -136,20 +133,7 @@ function infoArgs({ values, positionals }: ReturnType<typeof parse>): CliArgs {
   if (positionals.length !== 2) throw new UsageError('subdiv info takes exactly one INPUT file');
   const given = Object.keys(values);
   if (given.length > 0) throw new UsageError(`subdiv info takes no options, not --${given[0]}`);
-  return {
-    command: 'info',
-    input: positionals[1],
-    scheme: 'catmull-clark',
-    levels: 0,
-    triangulate: false,
-    rule: null,
-    fixedBoundary: false,
-    creaseMethod: null,
-    boundary: null,
-    output: null,
-    stats: false,
-    help: false,
-  };
+  return { ...NO_OPTIONS, command: 'info', input: positionals[1], scheme: 'catmull-clark', help: false };
 }
 
 function parse(argv: string[]) {
