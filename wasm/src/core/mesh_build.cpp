@@ -483,19 +483,65 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
   return {};
 }
 
+std::vector<std::uint32_t> used_vertex_ranks(const Mesh_buffers& in,
+                                             std::uint32_t& used) {
+  std::vector<std::uint32_t> rank(in.vertex_count(), kUnusedVertex);
+  for (std::uint32_t v : in.face_indices) rank[v] = 0;
+  used = 0;
+  for (std::uint32_t& r : rank)
+    if (r == 0) r = used++;
+  return rank;
+}
+
+namespace {
+
+/// `t` with its vertices numbered by `map` (used_vertex_ranks). A crease
+/// or corner on a dropped vertex goes with it (a crease never has one: it
+/// is an edge of a face). Faces keep their numbers, so holes stay as they
+/// are.
+Mesh_tags remap_tags(const Mesh_tags& t,
+                     const std::vector<std::uint32_t>& map) {
+  const auto kept = [&](std::uint32_t v) {
+    return v < map.size() && map[v] != kUnusedVertex;
+  };
+  Mesh_tags out = t;
+  out.crease_edges.clear();
+  out.crease_sharpness.clear();
+  for (std::size_t i = 0; i + 1 < t.crease_edges.size(); i += 2) {
+    const auto a = t.crease_edges[i], b = t.crease_edges[i + 1];
+    if (!kept(a) || !kept(b) || i / 2 >= t.crease_sharpness.size()) continue;
+    out.crease_edges.push_back(map[a]);
+    out.crease_edges.push_back(map[b]);
+    out.crease_sharpness.push_back(t.crease_sharpness[i / 2]);
+  }
+  out.corner_vertices.clear();
+  out.corner_sharpness.clear();
+  for (std::size_t i = 0; i < t.corner_vertices.size(); ++i) {
+    const auto v = t.corner_vertices[i];
+    if (!kept(v) || i >= t.corner_sharpness.size()) continue;
+    out.corner_vertices.push_back(map[v]);
+    out.corner_sharpness.push_back(t.corner_sharpness[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+Mesh_tags tags_without_isolated_vertices(const Mesh_buffers& in) {
+  std::uint32_t used = 0;
+  const std::vector<std::uint32_t> map = used_vertex_ranks(in, used);
+  return used == in.vertex_count() ? in.tags : remap_tags(in.tags, map);
+}
+
 Mesh_buffers drop_isolated_vertices(Mesh_buffers in) {
   const std::size_t nv = in.vertex_count();
-  std::vector<std::uint32_t> map(nv, 0xffffffffu);
-  for (auto v : in.face_indices) map[v] = 0;
   std::uint32_t n = 0;
-  for (auto& m : map) {
-    if (m == 0) m = n++;
-  }
+  const std::vector<std::uint32_t> map = used_vertex_ranks(in, n);
   if (n == nv) return in;
   Mesh_buffers out;
   out.positions.reserve(3 * std::size_t(n));
   for (std::size_t v = 0; v < nv; ++v) {
-    if (map[v] == 0xffffffffu) continue;
+    if (map[v] == kUnusedVertex) continue;
     out.positions.insert(out.positions.end(), in.positions.begin() + 3 * v,
                          in.positions.begin() + 3 * v + 3);
   }
@@ -504,36 +550,13 @@ Mesh_buffers drop_isolated_vertices(Mesh_buffers in) {
   for (auto v : in.face_indices) out.face_indices.push_back(map[v]);
   for (std::size_t i = 0; i + 1 < in.control_edges.size(); i += 2) {
     const auto a = in.control_edges[i], b = in.control_edges[i + 1];
-    if (a >= nv || b >= nv || map[a] == 0xffffffffu || map[b] == 0xffffffffu)
+    if (a >= nv || b >= nv || map[a] == kUnusedVertex ||
+        map[b] == kUnusedVertex)
       continue;
     out.control_edges.push_back(map[a]);
     out.control_edges.push_back(map[b]);
   }
-  // Tags follow their vertices; a crease or corner on a dropped vertex goes
-  // with it (a crease never has one: it is an edge of a face). Faces keep
-  // their numbers, so holes stay as they are.
-  const Mesh_tags& t = in.tags;
-  const auto kept = [&](std::uint32_t v) {
-    return v < nv && map[v] != 0xffffffffu;
-  };
-  out.tags = t;
-  out.tags.crease_edges.clear();
-  out.tags.crease_sharpness.clear();
-  for (std::size_t i = 0; i + 1 < t.crease_edges.size(); i += 2) {
-    const auto a = t.crease_edges[i], b = t.crease_edges[i + 1];
-    if (!kept(a) || !kept(b) || i / 2 >= t.crease_sharpness.size()) continue;
-    out.tags.crease_edges.push_back(map[a]);
-    out.tags.crease_edges.push_back(map[b]);
-    out.tags.crease_sharpness.push_back(t.crease_sharpness[i / 2]);
-  }
-  out.tags.corner_vertices.clear();
-  out.tags.corner_sharpness.clear();
-  for (std::size_t i = 0; i < t.corner_vertices.size(); ++i) {
-    const auto v = t.corner_vertices[i];
-    if (!kept(v) || i >= t.corner_sharpness.size()) continue;
-    out.tags.corner_vertices.push_back(map[v]);
-    out.tags.corner_sharpness.push_back(t.corner_sharpness[i]);
-  }
+  out.tags = remap_tags(in.tags, map);
   return out;
 }
 

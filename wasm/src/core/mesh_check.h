@@ -44,6 +44,20 @@ Check_result check_buffers(
     const Mesh_buffers& in, const Check_naming& naming = {},
     std::vector<std::uint32_t>* corner_halfedges = nullptr);
 
+/// Marks a vertex no face uses in used_vertex_ranks.
+constexpr std::uint32_t kUnusedVertex = 0xffffffffu;
+
+/// Each vertex's index among the vertices a face uses (kUnusedVertex for
+/// the others); `used` gets their number. The numbering build_mesh,
+/// drop_isolated_vertices and a fast level from buffers give the vertices.
+std::vector<std::uint32_t> used_vertex_ranks(const Mesh_buffers& in,
+                                             std::uint32_t& used);
+
+/// `in`'s tags numbered as drop_isolated_vertices numbers the vertices
+/// (creases and corners on a vertex no face uses dropped; holes as they
+/// are).
+Mesh_tags tags_without_isolated_vertices(const Mesh_buffers& in);
+
 /// Copy of `in` without the vertices no face uses; the others keep their
 /// relative order. Returns `in` itself (moved, not copied, when passed as an
 /// rvalue) when all are used. Precondition: check_buffers(in) succeeded.

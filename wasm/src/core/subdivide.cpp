@@ -407,37 +407,9 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
 /// had to be triangulated (its faces, which holes name, changed).
 Mesh_tags unchanged_mesh_tags(const Mesh_buffers& in, const Mesh& mesh) {
   if (mesh.number_of_faces() != in.face_count()) return {};
-  Mesh_tags tags = in.tags;
+  Mesh_tags tags = detail::tags_without_isolated_vertices(in);
   tags.notes.clear();  // the reader's, for the user who loaded the file
-  if (mesh.number_of_vertices() == in.vertex_count()) return tags;
-  std::vector<std::uint32_t> rank(in.vertex_count(), refine::kNone);
-  for (std::uint32_t v : in.face_indices) rank[v] = 0;
-  std::uint32_t used = 0;
-  for (std::uint32_t& r : rank)
-    if (r == 0) r = used++;
-  // A tag on a vertex no face uses has nothing to apply to: dropped.
-  const auto at = [&](std::uint32_t v) {
-    return v < rank.size() ? rank[v] : refine::kNone;
-  };
-  Mesh_tags out = tags;
-  out.crease_edges.clear();
-  out.crease_sharpness.clear();
-  out.corner_vertices.clear();
-  out.corner_sharpness.clear();
-  for (std::size_t i = 0; i < tags.crease_sharpness.size(); ++i) {
-    const std::uint32_t a = at(tags.crease_edges[2 * i]),
-                        b = at(tags.crease_edges[2 * i + 1]);
-    if (a == refine::kNone || b == refine::kNone) continue;
-    out.crease_edges.insert(out.crease_edges.end(), {a, b});
-    out.crease_sharpness.push_back(tags.crease_sharpness[i]);
-  }
-  for (std::size_t i = 0; i < tags.corner_sharpness.size(); ++i) {
-    const std::uint32_t v = at(tags.corner_vertices[i]);
-    if (v == refine::kNone) continue;
-    out.corner_vertices.push_back(v);
-    out.corner_sharpness.push_back(tags.corner_sharpness[i]);
-  }
-  return out;
+  return tags;
 }
 
 /// Whether a run applies OpenSubdiv's creasing: Catmull-Clark or Loop on

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/mesh_check.h"
 #include "level_convert.h"
 
 namespace subdivlab {
@@ -53,15 +54,11 @@ std::string apply_tags(const Mesh_buffers& in, const Mesh_tags& tags,
                        const Creasing& creasing, bool faces_renumbered,
                        Level& l) {
   const std::size_t nv = in.vertex_count();
-  // The level's index of each input vertex (unused ones are dropped).
+  // The level's index of each input vertex (unused ones are dropped; the
+  // tags keep the input's numbers for the messages).
+  std::uint32_t used = 0;
   std::vector<std::uint32_t> rank;
-  if (l.vertex_count != nv) {
-    rank.assign(nv, kNone);
-    for (std::uint32_t v : in.face_indices) rank[v] = 0;
-    std::uint32_t used = 0;
-    for (std::uint32_t& r : rank)
-      if (r == 0) r = used++;
-  }
+  if (l.vertex_count != nv) rank = detail::used_vertex_ranks(in, used);
   const auto level_vertex = [&](std::uint32_t v) {
     if (v >= nv) return kNone;
     return rank.empty() ? v : rank[v];

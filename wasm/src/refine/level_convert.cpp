@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/mesh_check.h"
+
 namespace subdivlab {
 namespace refine {
 
@@ -104,11 +106,8 @@ Level level_from_buffers(const Mesh_buffers& in,
                          const std::vector<std::uint32_t>& corner_halfedges) {
   Level l;
   const std::size_t nv = in.vertex_count();
-  std::vector<std::uint32_t> rank(nv, kNone);
-  for (std::uint32_t v : in.face_indices) rank[v] = 0;
   std::uint32_t used = 0;
-  for (std::uint32_t& r : rank)
-    if (r == 0) r = used++;
+  std::vector<std::uint32_t> rank = detail::used_vertex_ranks(in, used);
   l.vertex_count = used;
   // Every vertex used (nearly always): the level keeps the input's indices.
   const bool all_used = used == nv;
