@@ -240,23 +240,17 @@ void apply_crease_rules(const Level& p, const Creasing& creasing,
 
   // Vertex points (Sdc::Scheme::ComputeVertexVertexMask), around each
   // vertex's edges.
-  size_to(s.begin, std::size_t{V} + 1);
-  std::fill(s.begin.begin(), s.begin.end(), 0);
-  for (std::uint32_t h = 0; h < 2 * E; ++h) ++s.begin[t[h ^ 1] + 1];
-  for (std::uint32_t v = 0; v < V; ++v) s.begin[v + 1] += s.begin[v];
-  size_to(s.halfedges, 2 * std::size_t{E});
-  for (std::uint32_t h = 0; h < 2 * E; ++h)
-    s.halfedges[s.begin[t[h ^ 1]]++] = h;
-  // s.begin[v] now ends v's run: v's halfedges are [begin[v - 1], begin[v]).
+  vertex_halfedges(p, s.around);
+  const std::vector<std::uint32_t>& out_of = s.around.halfedges;
   const bool corners =
       creasing.boundary == Boundary_interpolation::edge_and_corner;
   const bool uniform = creasing.method == Crease_method::uniform;
   for (std::uint32_t v = 0; v < V; ++v) {
-    const std::uint32_t first = v == 0 ? 0 : s.begin[v - 1], last = s.begin[v];
+    const std::uint32_t first = s.around.begin[v], last = s.around.begin[v + 1];
     float pv = p.vertex_sharpness[v], cv = c.vertex_sharpness[v];
     std::uint32_t parent_sharp = 0, child_sharp = 0, border_edges = 0;
     for (std::uint32_t i = first; i < last; ++i) {
-      const std::uint32_t h = s.halfedges[i], e = h >> 1;
+      const std::uint32_t h = out_of[i], e = h >> 1;
       const bool b = border(e);
       border_edges += b;
       parent_sharp += is_sharp(effective(p.edge_sharpness[e], b));
@@ -278,7 +272,7 @@ void apply_crease_rules(const Level& p, const Creasing& creasing,
     const auto crease_point = [&](double* q, bool child) {
       double ends[3] = {0, 0, 0};
       for (std::uint32_t i = first; i < last; ++i) {
-        const std::uint32_t h = s.halfedges[i], e = h >> 1;
+        const std::uint32_t h = out_of[i], e = h >> 1;
         const bool b = border(e);
         const float sharpness =
             child ? effective(c.edge_sharpness[(h & 1) ? E + e : e], b)
@@ -313,7 +307,7 @@ void apply_crease_rules(const Level& p, const Creasing& creasing,
       sum = pv;
     }
     for (std::uint32_t i = first; i < last; ++i) {
-      const std::uint32_t h = s.halfedges[i], e = h >> 1;
+      const std::uint32_t h = out_of[i], e = h >> 1;
       const bool b = border(e);
       const float ps = effective(p.edge_sharpness[e], b);
       const bool decays =

@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "core/mesh_types.h"
+#include "level_convert.h"
 #include "refine_level.h"
 
 namespace subdivlab {
@@ -70,9 +71,10 @@ std::string apply_tags(const Mesh_buffers& in, const Mesh_tags& tags,
 void refine_crease_tables(const Level& parent, const Creasing& creasing,
                           bool pqq, Level& child);
 
-/// Scratch of apply_crease_rules, kept between steps.
+/// Scratch of apply_crease_rules, kept between steps: the halfedges out of
+/// each vertex.
 struct Crease_scratch {
-  std::vector<std::uint32_t> begin, halfedges;  ///< halfedges out of a vertex
+  Vertex_halfedges around;
 };
 
 /// Recomputes the child's points that creasing changes (the primal points

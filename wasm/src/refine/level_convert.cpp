@@ -160,18 +160,25 @@ void vertex_valences(const Level& level, std::vector<std::uint32_t>& valence,
   }
 }
 
+void vertex_halfedges(const Level& level, Vertex_halfedges& r) {
+  const std::uint32_t V = level.vertex_count, halfedges = 2 * level.edge_count;
+  const std::uint32_t* t = level.halfedge_target.data();
+  size_to(r.begin, std::size_t{V} + 1);
+  std::fill(r.begin.begin(), r.begin.end(), 0);
+  for (std::uint32_t h = 0; h < halfedges; ++h) ++r.begin[t[h ^ 1] + 1];
+  for (std::uint32_t v = 0; v < V; ++v) r.begin[v + 1] += r.begin[v];
+  size_to(r.halfedges, halfedges);
+  // Each run is filled from its start, which moves to the next run's; the
+  // starts are then moved back.
+  for (std::uint32_t h = 0; h < halfedges; ++h)
+    r.halfedges[r.begin[t[h ^ 1]]++] = h;
+  for (std::uint32_t v = V; v > 0; --v) r.begin[v] = r.begin[v - 1];
+  r.begin[0] = 0;
+}
+
 Vertex_halfedges vertex_halfedges(const Level& level) {
   Vertex_halfedges r;
-  r.begin.assign(std::size_t{level.vertex_count} + 1, 0);
-  const std::uint32_t halfedges = 2 * level.edge_count;
-  const std::uint32_t* t = level.halfedge_target.data();
-  for (std::uint32_t h = 0; h < halfedges; ++h) ++r.begin[t[h ^ 1] + 1];
-  for (std::uint32_t v = 0; v < level.vertex_count; ++v)
-    r.begin[v + 1] += r.begin[v];
-  r.halfedges.resize(halfedges);
-  std::vector<std::uint32_t> fill(r.begin.begin(), r.begin.end() - 1);
-  for (std::uint32_t h = 0; h < halfedges; ++h)
-    r.halfedges[fill[t[h ^ 1]]++] = h;
+  vertex_halfedges(level, r);
   return r;
 }
 

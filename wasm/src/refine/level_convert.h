@@ -39,6 +39,8 @@ struct Vertex_halfedges {
                      std::uint32_t b) const;
 };
 Vertex_halfedges vertex_halfedges(const Level& level);
+/// The same into `out`, whose memory is reused.
+void vertex_halfedges(const Level& level, Vertex_halfedges& out);
 
 /// The level as buffers, as to_buffers gives the same Surface_mesh: faces
 /// from their first corner, vertices in index order; the marked edges as
