@@ -23,10 +23,12 @@ const std::vector<Scheme_info>& scheme_table() {
   static const std::vector<Scheme_info> schemes = {
       {"catmull-clark", "Catmull-Clark", "pqq",
        "Quad refinement (PQQ): every face splits into quads; smooth, "
-       "approximating. Any polygons."},
+       "approximating. Any polygons.",
+       true},
       {"loop", "Loop", "ptq",
        "Triangle refinement (PTQ): each triangle splits into four; smooth, "
-       "approximating. Needs triangles."},
+       "approximating. Needs triangles.",
+       true},
       {"doo-sabin", "Doo-Sabin", "dqq",
        "Dual quad refinement (DQQ): new faces for every face, edge and "
        "vertex; cuts corners. Any polygons."},
@@ -89,6 +91,11 @@ std::string scheme_list() {
 }
 
 bool sqrt3_refines_border(int global_step) { return global_step % 2 == 1; }
+
+bool applies_creases(const Subdivide_options& o) {
+  const Scheme_info* s = find_scheme(o.scheme);
+  return s != nullptr && s->creases && runs_on_fast_host(o);
+}
 
 bool runs_on_fast_host(const Subdivide_options& o) {
   const Host_info* h = host_of(o);

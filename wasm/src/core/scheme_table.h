@@ -35,4 +35,8 @@ bool sqrt3_refines_border(int global_step);
 /// its host does unless CGAL's hosts are asked for.
 bool runs_on_fast_host(const Subdivide_options& o);
 
+/// Whether a step of `o` applies a mesh's tags (Scheme_info::creases; on
+/// the fast hosts only: CGAL's have no creasing).
+bool applies_creases(const Subdivide_options& o);
+
 }  // namespace subdivlab::detail

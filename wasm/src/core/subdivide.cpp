@@ -412,13 +412,13 @@ Mesh_tags unchanged_mesh_tags(const Mesh_buffers& in, const Mesh& mesh) {
   return tags;
 }
 
-/// Whether a run applies OpenSubdiv's creasing: Catmull-Clark or Loop on
-/// a mesh with tags, or with a border mode other than CGAL's; `creasing`
+/// Whether a run applies OpenSubdiv's creasing: a scheme that applies tags
+/// (applies_creases) on a mesh with tags, or with a border mode other than
+/// CGAL's; `creasing`
 /// gets the tags' options overridden by the run's.
 bool creasing_of(const Mesh_buffers& in, const Subdivide_options& options,
                  refine::Creasing& creasing) {
-  if (options.scheme != "catmull-clark" && options.scheme != "loop")
-    return false;
+  if (!applies_creases(options)) return false;
   creasing.method = options.crease_method.value_or(in.tags.crease_method);
   creasing.boundary = options.boundary.value_or(in.tags.boundary);
   return !in.tags.crease_edges.empty() || !in.tags.corner_vertices.empty() ||
@@ -584,8 +584,7 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
                       static_cast<double>(in.face_count()),
                       static_cast<double>(in.face_indices.size()));
     refine::Creasing creasing;
-    c.creased =
-        runs_on_fast_host(options) && creasing_of(in, options, creasing);
+    c.creased = creasing_of(in, options, creasing);
     Run_prediction run;
     predict_run(options, c, input, marks, false, run);
     c = run.after;

@@ -88,6 +88,9 @@ struct Scheme_info {
   std::string label;        ///< the name a picker shows
   std::string host;         ///< a Host_info name; empty for custom (its rules')
   std::string description;  ///< one line for a picker
+  /// Applies OpenSubdiv's tags (creases, corners, holes, border modes;
+  /// refine/crease.h): the schemes OpenSubdiv has, on the fast hosts.
+  bool creases = false;
 };
 
 /// The hosts, and the schemes in display order.
