@@ -35,6 +35,12 @@ test('a creased cube: tags in the facts, creases drawn, decaying level by level'
   expect(paths.reduce((n, p) => n + p[3].split('M').length - 1, 0)).toBe(8);
   expect(svg).not.toContain('id="creases-1"');
   expect(paths[0][2]).toBe(`#${sharpnessColor(1.5).getHexString()}`);
+  // And the corner, now of sharpness 4.25 - 2: one dot of its colour.
+  const dots = [...svg.matchAll(/<g id="corners-0(-back)?" fill="([^"]+)">(.*?)<\/g>/g)];
+  expect(dots.length).toBe(2);
+  expect(dots.reduce((n, d) => n + d[3].split('<circle').length - 1, 0)).toBe(1);
+  expect(dots[0][2]).toBe(`#${sharpnessColor(2.25).getHexString()}`);
+  expect(svg).not.toContain('id="corners-1"');
   const drawn = await app.canvasPixels();
   // K hides them: the picture changes, and comes back with K again.
   await app.page.keyboard.press('k');
@@ -48,4 +54,21 @@ test('a creased cube: tags in the facts, creases drawn, decaying level by level'
   await app.chooseScheme('doo-sabin');
   await app.subdivide();
   await expect(app.byTestId('facts.tags')).toHaveText('–');
+});
+
+test('tags the core does not apply are named with their lines in a notice, gone with the next model', async ({
+  app,
+}) => {
+  await app.open();
+  const text = `${CREASED_CUBE}t smoothtriangles 1/0/0 1\nt facevaryingpropagatecorners 1/0/0 1\n`;
+  const lines = text.split('\n').length - 1;
+  await app.load('cube-notes.obj', text);
+  await expect(app.byTestId('notice.message')).toHaveText(
+    `cube-notes.obj loaded without some of its tags: line ${lines - 1}: tag 'smoothtriangles' is not applied; ` +
+      `line ${lines}: tag 'facevaryingpropagatecorners' is not applied.`,
+  );
+  // The model and its applied tags are there all the same.
+  await expect(app.byTestId('facts.tags')).toHaveText('4 creases, 1 corner');
+  await app.load('cube-creased.obj', CREASED_CUBE);
+  await expect(app.byTestId('notice')).toBeHidden();
 });

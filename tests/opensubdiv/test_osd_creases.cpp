@@ -19,6 +19,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <map>
 #include <memory>
 #include <set>
@@ -26,6 +29,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/mesh_io.h"
 #include "core/subdivide.h"
 
 namespace {
@@ -550,6 +554,49 @@ TEST(OpenSubdivAndCgal, AgreeOnUntaggedMeshesWithTheEdgeOnlyBorder) {
   expect_same_as_opensubdiv(triangle_grid(3), true, 2);
   expect_same_as_opensubdiv(torus(6, 5), false, 2);
   expect_same_as_opensubdiv(octahedron(), true, 2);
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << "cannot read " << path;
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The app's crease-editing test (tests/e2e/crease-editing.spec.ts) sets
+// edge 1-5 of the Creased cube sample to sharpness 2, subdivides twice and
+// compares the level-0 vertices' level-2 points with the values in
+// tests/fixtures/crease-edit.osd.txt. Those values are OpenSubdiv's: checked
+// here against Far, and SubdivLab's core against both.
+TEST(OpenSubdivReference, CreaseEditOfTheCreasedCubeSample) {
+  auto read = subdivlab::read_mesh(
+      file_text(ROOT_DIR "/public/meshes/cube-creased.obj"),
+      subdivlab::Mesh_format::obj);
+  ASSERT_TRUE(read.ok()) << read.status.message;
+  Mesh_buffers m = read.value;
+  crease(m, 1, 5, 2.0f);
+  const Osd_run osd = osd_refine(m, false, 2);
+  const Mesh_buffers ours = subdivide(m, false, 2);
+  std::istringstream reference(
+      file_text(ROOT_DIR "/tests/fixtures/crease-edit.osd.txt"));
+  std::string line;
+  int rows = 0;
+  while (std::getline(reference, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    int v = -1;
+    double want[3];
+    ASSERT_TRUE(row >> v >> want[0] >> want[1] >> want[2]) << line;
+    const Far::Index c1 = osd.refiner->GetLevel(0).GetVertexChildVertex(v);
+    const Point& q =
+        osd.points[2][osd.refiner->GetLevel(1).GetVertexChildVertex(c1)];
+    const double theirs[3] = {q.x, q.y, q.z};
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(theirs[i], want[i], 1e-12) << "vertex " << v;
+      EXPECT_NEAR(ours.positions[3 * v + i], want[i], 1e-12) << "vertex " << v;
+    }
+    ++rows;
+  }
+  EXPECT_EQ(rows, 8);
 }
 
 }  // namespace

@@ -696,6 +696,7 @@ val js_scheme_info() {
       o.set("label", s.label);
       o.set("host", s.host.empty() ? val::null() : val(s.host));
       o.set("description", s.description);
+      o.set("creases", s.creases);
       schemes.call<void>("push", o);
     }
     val out = ok_object();

@@ -9,8 +9,10 @@ import type { SchemeName } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
+import { CreaseEditor } from '../edit/crease-editor';
 import { nextRenderMode } from '../render/render-mode';
 import { ConfirmDialog } from '../ui/confirm-dialog';
+import { CreasePanel } from '../ui/crease-panel';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
 import { button, el } from '../ui/dom';
 import { DropZone } from '../ui/drop-zone';
@@ -54,6 +56,8 @@ export class AppShell {
   private readonly rules: RulesPanel;
   private readonly levels: LevelPanel;
   private readonly display: DisplayPanel;
+  private readonly creaseEditor: CreaseEditor;
+  private readonly creasePanel: CreasePanel;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
   private readonly exportActions: ExportActions;
@@ -66,6 +70,8 @@ export class AppShell {
   /** Rules of the custom scheme (from the rules panel) and quad-triangle's border option. */
   private customRules: RuleSet | null = null;
   private fixedBoundary = false;
+  /** The notice shows the tags of the shown model that the core does not apply. */
+  private tagNotice = false;
   /** Where the shown model came from (null before the first load). */
   private source: ModelSource | null = null;
 
@@ -127,6 +133,17 @@ export class AppShell {
       onReset: () => this.viewer.reset(),
       onLevel: (k) => this.viewer.setLevel(k),
     });
+    this.creaseEditor = new CreaseEditor(this.viewer, (error) =>
+      this.showError(this.viewer.state.modelName ?? 'mesh', error),
+    );
+    this.creasePanel = new CreasePanel({
+      onEditing: (on) => this.creaseEditor.setEditing(on),
+      onSharpness: (sharpness) => void this.creaseEditor.setSharpness(sharpness),
+      onUndo: () => this.creaseEditor.undo(),
+      onRedo: () => this.creaseEditor.redo(),
+    });
+    this.creaseEditor.onChange((state) => this.creasePanel.update(state));
+    this.creasePanel.update(this.creaseEditor.state);
     this.display = new DisplayPanel({
       onRenderMode: (m) => this.viewer.setRenderMode(m),
       onOverlay: (name, on) => this.viewer.setOverlay(name, on),
@@ -191,6 +208,7 @@ export class AppShell {
       this.scheme.element,
       this.rules.element,
       this.levels.element,
+      this.creasePanel.element,
       this.display.element,
       shortcutsHelp(),
     );
@@ -222,6 +240,17 @@ export class AppShell {
         open: () => this.fileInput.click(),
         cancel: () => this.viewer.cancel(),
         copyImage: () => void this.exportActions.copyImage(false),
+        creases: {
+          toggleEditing: () => this.creaseEditor.setEditing(!this.creaseEditor.state.editing),
+          sharpness: (sharpness) => {
+            const { editing, selection } = this.creaseEditor.state;
+            if (!editing || !selection) return false;
+            void this.creaseEditor.setSharpness(sharpness);
+            return true;
+          },
+          undo: () => this.creaseEditor.undo(),
+          redo: () => this.creaseEditor.redo(),
+        },
       },
       () => this.confirm.open || this.embedDialog.open,
     );
@@ -272,6 +301,12 @@ export class AppShell {
       },
       positions: async () => Array.from((await this.viewer.meshOf())?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
+      controlVertexOnScreen: (v) => {
+        const at = this.viewer.view.controlVertexOnScreen(v);
+        if (!at) return null;
+        const rect = this.viewer.view.canvas.getBoundingClientRect();
+        return { x: rect.left + at.x, y: rect.top + at.y };
+      },
     };
   }
 
@@ -327,11 +362,24 @@ export class AppShell {
       this.sharePanel.clear();
       this.errors.hide();
       this.lastError = null;
+      this.showTagNotes(mesh.name);
       return true;
     } catch (error) {
       this.showError(name, error);
       return false;
     }
+  }
+
+  /** Names the file's tags that the core reads but does not apply (their lines), or hides such a notice of an earlier file. */
+  private showTagNotes(name: string): void {
+    const notes = this.viewer.controlMesh?.tags?.notes ?? [];
+    if (notes.length > 0) {
+      const more = notes.length > 3 ? `; and ${notes.length - 3} more` : '';
+      this.notice.show(`${name} loaded without some of its tags: ${notes.slice(0, 3).join('; ')}${more}.`);
+    } else if (this.tagNotice) {
+      this.notice.hide();
+    }
+    this.tagNotice = notes.length > 0;
   }
 
   /** Chooses a scheme (menu or link): levels of the previous one are dropped. */

@@ -58,6 +58,8 @@ export interface SubdivLabTestApi {
   positions(): Promise<number[]>;
   /** The link Share would copy; null when there is none (a local file, no model). */
   shareLink(): string | null;
+  /** Where control vertex `v` is drawn, in page (client) pixels, so a test can click it or an edge; null: not in view. */
+  controlVertexOnScreen(v: number): { x: number; y: number } | null;
 }
 
 declare global {

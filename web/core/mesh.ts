@@ -52,6 +52,9 @@ export interface MeshTags {
   notes: string[];
 }
 
+/** OpenSubdiv's infinite sharpness: a crease or corner of 10 and above never decays. */
+export const INFINITELY_SHARP = 10;
+
 export type MeshFormat = 'off' | 'obj';
 
 /** CGAL's four schemes (issue 2). */

@@ -287,7 +287,8 @@ export interface HostInfo {
 /** What the core knows of its schemes: each scheme's label, host (null for custom: its rule set's) and description. */
 export interface CoreSchemeInfo {
   hosts: HostInfo[];
-  schemes: { name: string; label: string; host: string | null; description: string }[];
+  /** `creases`: the scheme applies a mesh's tags (creases, corners, holes, border modes). */
+  schemes: { name: string; label: string; host: string | null; description: string; creases: boolean }[];
 }
 
 /** The core's scheme and host table (wasm/src/core/scheme_table.cpp), in display order. */

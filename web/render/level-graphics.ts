@@ -17,7 +17,7 @@ import {
   Vector3,
 } from 'three';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
-import type { MeshTags, RenderBuffers } from '../core/mesh';
+import { INFINITELY_SHARP, type MeshTags, type RenderBuffers } from '../core/mesh';
 
 /**
  * Bytes of index one draw call takes at most: a larger surface or edge
@@ -40,9 +40,6 @@ function partsOf(whole: BufferGeometry, index: Uint32Array, per: number): Buffer
   }
   return parts;
 }
-
-/** OpenSubdiv's infinite sharpness: 10 and above never decays. */
-export const INFINITELY_SHARP = 10;
 
 /**
  * The colour of a sharpness: amber for a crease that fades within a level,

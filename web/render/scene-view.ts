@@ -14,6 +14,7 @@ import {
   Color,
   DirectionalLight,
   DoubleSide,
+  Float32BufferAttribute,
   LineBasicMaterial,
   LineSegments,
   Mesh,
@@ -30,6 +31,7 @@ import { TrackballControls } from 'three/addons/controls/TrackballControls.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
+import { type ControlPick, pickControl, screenPointOf } from './control-pick';
 import type { LevelGraphics } from './level-graphics';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
@@ -46,7 +48,20 @@ export const VIEW_COLORS = {
   control: '#e8590c',
   curves: '#c2255c',
   bbox: '#6b7280',
+  /** The control edges and vertex the crease editor has selected. */
+  selection: '#15aabf',
 } as const;
+
+/** A click on the view: CSS pixels from its top left, and the modifier keys held. */
+export interface ViewClick {
+  x: number;
+  y: number;
+  altKey: boolean;
+  shiftKey: boolean;
+}
+
+/** A press and release this close (CSS pixels) is a click, not a drag of the camera. */
+const CLICK_SLOP = 4;
 
 /** Direction the camera looks from (towards the model) when fitting: shows three sides of a box. */
 const FIT_DIRECTION = new Vector3(0.55, 0.45, 1).normalize();
@@ -100,6 +115,10 @@ export class SceneView {
   private readonly curveLines: LineSegments;
   private readonly creaseLines: LineSegments2;
   private readonly cornerPoints: Points<BufferGeometry, PointsMaterial>;
+  private readonly selectedLines: LineSegments2;
+  private readonly selectedPoints: Points<BufferGeometry, PointsMaterial>;
+  /** Level 0's graphics (the control mesh), for picking. */
+  private control: LevelGraphics | null = null;
   private readonly smoothMaterial: MeshLambertMaterial;
   private readonly flatMaterial: MeshLambertMaterial;
   private bboxHelper: Box3Helper | null = null;
@@ -118,6 +137,8 @@ export class SceneView {
   onViewChange: (() => void) | null = null;
   /** Called when a picture of the view is in its canvas (after each {@link render}). */
   onDraw: (() => void) | null = null;
+  /** Called on a click (press and release without dragging the camera) of the primary button. */
+  onClick: ((click: ViewClick) => void) | null = null;
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = sharedRenderer();
@@ -166,6 +187,17 @@ export class SceneView {
       new PointsMaterial({ vertexColors: true, size: 12, sizeAttenuation: false }),
     );
     this.cornerPoints.renderOrder = 4;
+    // The selection: wider than a crease and drawn before it, so a sharp edge shows both.
+    this.selectedLines = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({ color: VIEW_COLORS.selection, linewidth: 9 }),
+    );
+    this.selectedLines.renderOrder = 2.5;
+    this.selectedPoints = new Points(
+      new BufferGeometry(),
+      new PointsMaterial({ color: VIEW_COLORS.selection, size: 18, sizeAttenuation: false }),
+    );
+    this.selectedPoints.renderOrder = 3.5;
     for (const object of [
       this.surface,
       this.edgeLines,
@@ -173,6 +205,8 @@ export class SceneView {
       this.curveLines,
       this.creaseLines,
       this.cornerPoints,
+      this.selectedLines,
+      this.selectedPoints,
     ]) {
       object.visible = false;
       object.frustumCulled = false;
@@ -192,6 +226,24 @@ export class SceneView {
       this.updateClipping();
       this.dirty = true;
       this.onViewChange?.();
+    });
+
+    let press: { x: number; y: number } | null = null;
+    this.canvas.addEventListener('pointerdown', (event) => {
+      press = event.button === 0 ? { x: event.clientX, y: event.clientY } : null;
+    });
+    this.canvas.addEventListener('pointerup', (event) => {
+      if (!press || event.button !== 0) return;
+      const moved = Math.hypot(event.clientX - press.x, event.clientY - press.y);
+      press = null;
+      if (moved > CLICK_SLOP || !this.onClick) return;
+      const rect = this.canvas.getBoundingClientRect();
+      this.onClick({
+        x: event.clientX - rect.left,
+        y: event.clientY - rect.top,
+        altKey: event.altKey,
+        shiftKey: event.shiftKey,
+      });
     });
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
@@ -238,6 +290,7 @@ export class SceneView {
 
   /** The level-0 graphics whose polygon edges form the control-mesh overlay. */
   setControlMesh(graphics: LevelGraphics | null): void {
+    this.control = graphics;
     if (graphics) this.controlLines.geometry = graphics.edges;
     this.controlLines.userData.hasLevel = graphics !== null;
     this.applyVisibility();
@@ -356,6 +409,36 @@ export class SceneView {
     this.onViewChange?.();
   }
 
+  /** The control vertex or edge drawn under (x, y), CSS pixels from the view's top left (see control-pick.ts). */
+  pickControl(x: number, y: number): ControlPick | null {
+    if (!this.control) return null;
+    const { width, height } = this.size;
+    return pickControl(this.control, this.camera, x, y, width, height);
+  }
+
+  /** Where control vertex `v` is drawn, CSS pixels from the view's top left (null: not in view). */
+  controlVertexOnScreen(v: number): { x: number; y: number } | null {
+    if (!this.control) return null;
+    const { width, height } = this.size;
+    return screenPointOf(this.control, this.camera, v, width, height);
+  }
+
+  /**
+   * Marks control edges (`segments`: x y z of both ends, six numbers an
+   * edge) and vertices (`points`: three numbers each) as selected; empty
+   * arrays clear the marks.
+   */
+  setSelection(segments: Float32Array, points: Float32Array): void {
+    this.selectedLines.geometry.dispose();
+    this.selectedLines.geometry = new LineSegmentsGeometry().setPositions(segments);
+    this.selectedLines.visible = segments.length > 0;
+    this.selectedPoints.geometry.dispose();
+    this.selectedPoints.geometry = new BufferGeometry();
+    this.selectedPoints.geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    this.selectedPoints.visible = points.length > 0;
+    this.dirty = true;
+  }
+
   /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */
   edgeSegments(): number {
     const parts = [this.edgeLines, ...this.edgeLines.children.filter((c) => c.visible)] as LineSegments[];
@@ -444,6 +527,10 @@ export class SceneView {
     (this.curveLines.material as LineBasicMaterial).dispose();
     this.creaseLines.material.dispose();
     (this.cornerPoints.material as PointsMaterial).dispose();
+    for (const object of [this.selectedLines, this.selectedPoints]) {
+      object.geometry.dispose();
+      object.material.dispose();
+    }
     this.canvas.remove();
   }
 

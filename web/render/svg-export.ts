@@ -2,10 +2,10 @@
  * SVG of the current view, drawn as a painter would: the polygons that face
  * the camera, sorted back to front by their centroid's depth, each filled
  * with a flat Lambert shade and stroked with its edges, then the control-mesh
- * overlay, the control-edge curves and the creases (coloured by sharpness). A line that lies on no camera-facing
- * polygon of its mesh is drawn before the faces, so that the surface covers
- * it where it passes behind, as the depth-tested view does; the other lines
- * go on top. Polygons stay polygons (one <polygon> per face). three's
+ * overlay, the control-edge curves, the creases and the corners (coloured
+ * by sharpness). A line or corner that lies on no camera-facing polygon of
+ * its mesh is drawn before the faces, so that the surface covers it where
+ * it passes behind, as the depth-tested view does; the others go on top. Polygons stay polygons (one <polygon> per face). three's
  * SVGRenderer draws triangles, so the projection is done here.
  */
 import { Color, type PerspectiveCamera, Vector3 } from 'three';
@@ -42,6 +42,8 @@ export interface SvgExportInput {
   curves?: LineSet | null;
   /** The shown level's sharp edges, a set per colour (their sharpness's), when the creases are shown. */
   creases?: { lines: LineSet; color: string }[];
+  /** The shown level's sharp vertices (`lines.edges` holds one vertex each), a set per colour. */
+  corners?: { points: LineSet; color: string }[];
   /** Fill the background (false: transparent). */
   background: boolean;
 }
@@ -118,11 +120,18 @@ export function exportSvg(input: SvgExportInput): string {
     { lines: input.control, id: 'control-mesh', color: VIEW_COLORS.control, width: 1.2 },
     ...(input.creases ?? []).map(({ lines, color }, i) => ({ lines, id: `creases-${i}`, color, width: 3 })),
   ].flatMap(({ lines, id, color, width: w }) => (lines ? [{ ...splitByFacing(lines, camera), id, color, w }] : []));
+  const dots = (input.corners ?? []).map(({ points, color }, i) => ({
+    ...splitPointsByFacing(points, camera),
+    id: `corners-${i}`,
+    color,
+  }));
   for (const o of overlays) out.push(linePath(o.back, `${o.id}-back`, o.color, camera, width, height, o.w));
+  for (const o of dots) out.push(dotGroup(o.back, `${o.id}-back`, o.color, camera, width, height));
   out.push(`<g id="faces" stroke="${VIEW_COLORS.edges}" stroke-width="0.6" stroke-linejoin="round">`);
   for (const f of faces) out.push(`<polygon points="${f.points}" fill="${f.fill}"/>`);
   out.push('</g>');
   for (const o of overlays) out.push(linePath(o.front, o.id, o.color, camera, width, height, o.w));
+  for (const o of dots) out.push(dotGroup(o.front, o.id, o.color, camera, width, height));
   out.push('</svg>');
   return `${out.join('\n')}\n`;
 }
@@ -157,6 +166,25 @@ function polygonNormalAndCentroid(
   centroid.divideScalar(size);
 }
 
+/** Calls `visit` with the vertices of each polygon of `faces` that faces the camera. */
+function forFacingPolygons(
+  positions: ArrayLike<number>,
+  faces: NonNullable<LineSet['faces']>,
+  camera: PerspectiveCamera,
+  visit: (corner: (k: number) => number, size: number) => void,
+): void {
+  const normal = new Vector3();
+  const centroid = new Vector3();
+  let offset = 0;
+  for (const size of Array.from(faces.faceSizes)) {
+    polygonNormalAndCentroid(positions, faces.faceIndices, offset, size, normal, centroid);
+    const start = offset;
+    if (normal.lengthSq() > 0 && facesCamera(camera, centroid, normal))
+      visit((k) => faces.faceIndices[start + (k % size)], size);
+    offset += size;
+  }
+}
+
 /**
  * Splits `lines` into those on a camera-facing polygon of `lines.faces`
  * (front) and the rest (back). Without faces every line is in front.
@@ -167,24 +195,46 @@ function splitByFacing(lines: LineSet, camera: PerspectiveCamera): { front: Line
   const vertexCount = positions.length / 3;
   const key = (a: number, b: number) => Math.min(a, b) * vertexCount + Math.max(a, b);
   const onFront = new Set<number>();
-  const normal = new Vector3();
-  const centroid = new Vector3();
-  let offset = 0;
-  for (const size of Array.from(faces.faceSizes)) {
-    polygonNormalAndCentroid(positions, faces.faceIndices, offset, size, normal, centroid);
-    if (normal.lengthSq() > 0 && facesCamera(camera, centroid, normal)) {
-      for (let k = 0; k < size; k++) {
-        onFront.add(key(faces.faceIndices[offset + k], faces.faceIndices[offset + ((k + 1) % size)]));
-      }
-    }
-    offset += size;
-  }
+  forFacingPolygons(positions, faces, camera, (corner, size) => {
+    for (let k = 0; k < size; k++) onFront.add(key(corner(k), corner(k + 1)));
+  });
   const front: number[] = [];
   const back: number[] = [];
   for (let e = 0; e + 1 < edges.length; e += 2) {
     (onFront.has(key(edges[e], edges[e + 1])) ? front : back).push(edges[e], edges[e + 1]);
   }
   return { front: { positions, edges: front }, back: { positions, edges: back } };
+}
+
+/** As {@link splitByFacing}, for points (`points.edges`: one vertex each): in front when on a camera-facing polygon. */
+function splitPointsByFacing(points: LineSet, camera: PerspectiveCamera): { front: LineSet; back: LineSet } {
+  const { positions, edges: vertices, faces } = points;
+  if (!faces) return { front: points, back: { positions, edges: [] } };
+  const onFront = new Set<number>();
+  forFacingPolygons(positions, faces, camera, (corner, size) => {
+    for (let k = 0; k < size; k++) onFront.add(corner(k));
+  });
+  const front: number[] = [];
+  const back: number[] = [];
+  for (const v of Array.from(vertices)) (onFront.has(v) ? front : back).push(v);
+  return { front: { positions, edges: front }, back: { positions, edges: back } };
+}
+
+/** Points (`points.edges`: one vertex each) as dots of the view's corner size, in one group (id `id`). */
+function dotGroup(
+  points: LineSet,
+  id: string,
+  color: string,
+  camera: PerspectiveCamera,
+  width: number,
+  height: number,
+): string {
+  const dots: string[] = [];
+  for (const i of Array.from(points.edges)) {
+    const [x, y] = screenPoint(points.positions, i, camera, width, height);
+    dots.push(`<circle cx="${x}" cy="${y}" r="5"/>`);
+  }
+  return `<g id="${id}" fill="${color}">${dots.join('')}</g>`;
 }
 
 /** Line segments as one path (id `id`). */
@@ -197,14 +247,22 @@ function linePath(
   height: number,
   strokeWidth: number,
 ): string {
-  const v = new Vector3();
-  const project = (i: number): string => {
-    v.set(lines.positions[3 * i], lines.positions[3 * i + 1], lines.positions[3 * i + 2]).project(camera);
-    return `${n(((v.x + 1) / 2) * width)} ${n(((1 - v.y) / 2) * height)}`;
-  };
+  const project = (i: number): string => screenPoint(lines.positions, i, camera, width, height).join(' ');
   const d: string[] = [];
   for (let e = 0; e + 1 < lines.edges.length; e += 2) {
     d.push(`M${project(lines.edges[e])}L${project(lines.edges[e + 1])}`);
   }
   return `<path id="${id}" fill="none" stroke="${color}" stroke-width="${strokeWidth}" stroke-linecap="round" d="${d.join('')}"/>`;
+}
+
+/** Where vertex `i` of `positions` is drawn in a view of `width` × `height`, formatted. */
+function screenPoint(
+  positions: ArrayLike<number>,
+  i: number,
+  camera: PerspectiveCamera,
+  width: number,
+  height: number,
+): [string, string] {
+  const v = new Vector3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]).project(camera);
+  return [n(((v.x + 1) / 2) * width), n(((1 - v.y) / 2) * height)];
 }

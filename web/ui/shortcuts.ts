@@ -12,6 +12,15 @@ export interface ShortcutHandlers {
   open?: () => void;
   cancel: () => void;
   copyImage: () => void;
+  /** Crease editing (absent where there is none, as in an embedded viewer). */
+  creases?: {
+    toggleEditing: () => void;
+    /** Sets the selection's sharpness; false when nothing is being edited (the key does nothing). */
+    sharpness: (sharpness: number) => boolean;
+    /** Each false when there is nothing to undo or redo (the key is left to the page). */
+    undo: () => boolean;
+    redo: () => boolean;
+  };
 }
 
 /** Shortcut list for the help text and the README. */
@@ -27,6 +36,9 @@ export const SHORTCUTS: readonly { keys: string; action: string }[] = [
   { keys: 'O', action: 'Open a file' },
   { keys: '← ↑ → ↓', action: 'Rotate (the 3D view focused; with Shift: pan)' },
   { keys: '+ / −', action: 'Zoom in / out (the 3D view focused)' },
+  { keys: 'M', action: 'Edit creases: click a control edge or vertex (Alt+click: an edge loop)' },
+  { keys: '0 … 9 / I', action: 'Sharpness of the selected creases (I: infinitely sharp)' },
+  { keys: 'Ctrl+Z / Ctrl+Shift+Z', action: 'Undo / redo a crease edit' },
   { keys: 'Esc', action: 'Cancel a running step' },
   { keys: 'Ctrl+C', action: 'Copy the view as PNG' },
 ];
@@ -62,7 +74,18 @@ export function installShortcuts(
       handlers.copyImage();
       return;
     }
+    const creases = handlers.creases;
+    if (creases && (event.ctrlKey || event.metaKey) && !event.altKey) {
+      const key = event.key.toLowerCase();
+      const done = key === 'z' ? (event.shiftKey ? creases.redo() : creases.undo()) : key === 'y' && creases.redo();
+      if (done) event.preventDefault();
+      return;
+    }
     if (event.ctrlKey || event.metaKey || event.altKey) return;
+    if (creases && /^[0-9i]$/i.test(event.key)) {
+      if (creases.sharpness(event.key.toLowerCase() === 'i' ? 10 : Number(event.key))) event.preventDefault();
+      return;
+    }
     const action: Record<string, () => void> = {
       s: handlers.subdivide,
       r: handlers.cycleRenderMode,
@@ -74,6 +97,7 @@ export function installShortcuts(
       '[': () => handlers.stepLevel(-1),
       ']': () => handlers.stepLevel(1),
       ...(handlers.open ? { o: handlers.open } : {}),
+      ...(creases ? { m: creases.toggleEditing } : {}),
       Escape: handlers.cancel,
     };
     const run = action[event.key.length === 1 ? event.key.toLowerCase() : event.key];

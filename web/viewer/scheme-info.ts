@@ -15,6 +15,8 @@ export interface SchemeInfo {
   needsTriangles: boolean;
   /** The scheme steps with the rules panel's rule set (its host is the rule set's). */
   needsRules?: boolean;
+  /** The scheme applies a mesh's tags (creases, corners, holes, border modes): Catmull-Clark and Loop. */
+  creases: boolean;
 }
 
 function hostInfo(name: string) {
@@ -28,6 +30,7 @@ const INFO = new Map<string, SchemeInfo>(
       label: s.label,
       description: s.description,
       needsTriangles: s.host !== null && hostInfo(s.host)?.needsTriangles === true,
+      creases: s.creases,
       ...(s.host === null ? { needsRules: true } : {}),
     },
   ]),
@@ -43,7 +46,9 @@ export function isSchemeName(name: string): name is SchemeName {
 
 /** Info for a scheme name; names the app does not know yet get a neutral entry. */
 export function schemeInfo(name: SchemeName | string): SchemeInfo {
-  return INFO.get(name) ?? { label: name, description: `The core's ${name} scheme.`, needsTriangles: false };
+  return (
+    INFO.get(name) ?? { label: name, description: `The core's ${name} scheme.`, needsTriangles: false, creases: false }
+  );
 }
 
 /** The host's short name: PQQ, PTQ, DQQ, √3. */

@@ -34,7 +34,7 @@ import { fanPolygons } from '../render/fan-polygons';
 import { LevelGraphics, sharpnessColor } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
-import { exportSvg, type LineSet } from '../render/svg-export';
+import { exportSvg } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
 
@@ -78,6 +78,18 @@ export interface DrawnLevel {
 }
 
 /** A snapshot of the viewer, for panels and tests. */
+/** The vertices of tagged items (`per` an item: 2 for edges, 1 for corners), grouped by the colour of their sharpness. */
+function bySharpnessColor(vertices: Uint32Array, sharpness: Float32Array, per: 1 | 2): Map<string, number[]> {
+  const groups = new Map<string, number[]>();
+  for (let i = 0; i < sharpness.length; ++i) {
+    const color = `#${sharpnessColor(sharpness[i]).getHexString()}`;
+    const group = groups.get(color) ?? [];
+    group.push(...vertices.subarray(per * i, per * i + per));
+    groups.set(color, group);
+  }
+  return groups;
+}
+
 /** A level's tags as the facts panel lists them. */
 export interface TagSummary {
   creases: number;
@@ -278,6 +290,41 @@ export class SubdivViewer {
     }
   }
 
+  /**
+   * Gives the control mesh `tags` (undefined: none) and computes its levels
+   * again up to the one shown, one step at a time, so every level can still
+   * be scrubbed. The previous levels stay shown until the new ones are all
+   * there, and stay if it fails or a load or reset comes first.
+   */
+  async setControlTags(tags: MeshTags | undefined): Promise<void> {
+    const source = this.source;
+    if (this.disposed || !source) return;
+    this.cancel();
+    const generation = ++this.generation;
+    const target = this.current;
+    const { tags: _old, ...untagged } = source;
+    const mesh: Mesh = tags ? { ...untagged, tags } : untagged;
+    this.setBusy({ kind: 'subdivide', label: 'Applying the tags…', since: performance.now() });
+    const made: LevelData[] = [];
+    try {
+      made.push(await this.core.prepare(mesh));
+      for (let k = 1; k <= target && generation === this.generation; ++k)
+        made.push(await this.core.subdivide(made[k - 1].handle, this.stepOptions(k - 1, 1)));
+      if (generation !== this.generation) throw new CancelledError();
+    } catch (error) {
+      this.core.release(made.map((level) => level.handle));
+      throw error;
+    } finally {
+      if (generation === this.generation) this.setBusy(null);
+    }
+    for (const level of this.levels) level.graphics?.dispose();
+    this.core.release(this.levels.map((l) => l.data.handle));
+    this.source = mesh;
+    this.levels = made.map((data) => ({ data, graphics: null }));
+    this.current = target;
+    this.show();
+  }
+
   /** Shows computed level `k` (clamped to 0..N) at once. */
   setLevel(k: number): void {
     if (this.levels.length === 0) return;
@@ -356,7 +403,7 @@ export class SubdivViewer {
     return this.view.exportPng(scale, transparent);
   }
 
-  /** SVG of the view: camera-facing polygons back to front, and the overlays shown (the creases but their corners). */
+  /** SVG of the view: camera-facing polygons back to front, and the overlays shown. */
   exportSvg(transparent = false): string {
     const { buffers, controlEdges, tags } = this.requireLevel().data;
     const base = this.levels[0].data.buffers;
@@ -369,19 +416,20 @@ export class SubdivViewer {
       this.view.overlay('curves') && controlEdges.length > 0
         ? { positions: buffers.positions, edges: controlEdges, faces: mesh }
         : null;
-    // The sharp edges, one set per colour.
-    const creases: { lines: LineSet; color: string }[] = [];
-    if (this.view.overlay('creases') && tags && tags.creaseEdges.length > 0) {
-      const byColor = new Map<string, number[]>();
-      for (let i = 0; i < tags.creaseSharpness.length; ++i) {
-        const color = `#${sharpnessColor(tags.creaseSharpness[i]).getHexString()}`;
-        const edges = byColor.get(color) ?? [];
-        edges.push(tags.creaseEdges[2 * i], tags.creaseEdges[2 * i + 1]);
-        byColor.set(color, edges);
-      }
-      for (const [color, edges] of byColor)
-        creases.push({ lines: { positions: buffers.positions, edges, faces: mesh }, color });
-    }
+    // The sharp edges and vertices, one set per colour.
+    const shown = this.view.overlay('creases') && tags;
+    const creases = shown
+      ? [...bySharpnessColor(tags.creaseEdges, tags.creaseSharpness, 2)].map(([color, edges]) => ({
+          lines: { positions: buffers.positions, edges, faces: mesh },
+          color,
+        }))
+      : [];
+    const corners = shown
+      ? [...bySharpnessColor(tags.cornerVertices, tags.cornerSharpness, 1)].map(([color, vertices]) => ({
+          points: { positions: buffers.positions, edges: vertices, faces: mesh },
+          color,
+        }))
+      : [];
     return exportSvg({
       mesh,
       camera: this.view.camera,
@@ -389,6 +437,7 @@ export class SubdivViewer {
       control,
       curves,
       creases,
+      corners,
       background: !transparent,
     });
   }
