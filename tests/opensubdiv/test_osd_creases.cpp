@@ -2,35 +2,29 @@
 // reference for tagged meshes as CGAL is for the others: Catmull-Clark and
 // Loop on meshes with creases, corners, holes and each border mode, levels
 // 1-3, uniform and Chaikin creasing. Native only (OpenSubdiv is not built
-// for WebAssembly).
+// for WebAssembly; tests/unit/opensubdiv.test.ts holds the WASM core to the
+// same points through osd_reference).
 //
-// Numbering differs (SubdivLab numbers as CGAL does), so each level's
-// vertices are matched through their origin: a vertex's child keeps its
-// index on both sides; an edge's point is, on SubdivLab's side, the one
-// child vertex next to both ends, and on OpenSubdiv's its
-// GetEdgeChildVertex; a face's point (Catmull-Clark) is V + E + f on
-// SubdivLab's side. Through that map, points must agree to 1e-12 and the
-// faces and holes must be the same sets.
+// Each level's vertices are matched through their origin (osd_harness.h).
+// Through that map, points must agree to 1e-12 and the faces and holes must
+// be the same sets.
 #include <gtest/gtest.h>
-#include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <map>
-#include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "core/mesh_io.h"
 #include "core/subdivide.h"
+#include "osd_harness.h"
 
 namespace {
 
@@ -38,85 +32,8 @@ using namespace OpenSubdiv;
 using subdivlab::Boundary_interpolation;
 using subdivlab::Crease_method;
 using subdivlab::Mesh_buffers;
-
-struct Point {
-  double x = 0, y = 0, z = 0;
-  void Clear() { x = y = z = 0; }
-  void AddWithWeight(const Point& p, double w) {
-    x += w * p.x;
-    y += w * p.y;
-    z += w * p.z;
-  }
-};
-
-/// OpenSubdiv's uniform refinement of `mesh` (its tags included) to
-/// `levels`, with every level's points.
-struct Osd_run {
-  std::unique_ptr<Far::TopologyRefiner> refiner;
-  std::vector<std::vector<Point>> points;  // per level
-};
-
-Osd_run osd_refine(const Mesh_buffers& mesh, bool loop, int levels) {
-  std::vector<int> sizes(mesh.face_sizes.begin(), mesh.face_sizes.end());
-  std::vector<Far::Index> indices(mesh.face_indices.begin(),
-                                  mesh.face_indices.end());
-  std::vector<Far::Index> creases(mesh.tags.crease_edges.begin(),
-                                  mesh.tags.crease_edges.end());
-  std::vector<Far::Index> corners(mesh.tags.corner_vertices.begin(),
-                                  mesh.tags.corner_vertices.end());
-  std::vector<Far::Index> holes(mesh.tags.holes.begin(),
-                                mesh.tags.holes.end());
-  Far::TopologyDescriptor desc;
-  desc.numVertices = static_cast<int>(mesh.vertex_count());
-  desc.numFaces = static_cast<int>(sizes.size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  desc.numCreases = static_cast<int>(mesh.tags.crease_sharpness.size());
-  desc.creaseVertexIndexPairs = creases.data();
-  desc.creaseWeights = mesh.tags.crease_sharpness.data();
-  desc.numCorners = static_cast<int>(corners.size());
-  desc.cornerVertexIndices = corners.data();
-  desc.cornerWeights = mesh.tags.corner_sharpness.data();
-  desc.numHoles = static_cast<int>(holes.size());
-  desc.holeIndices = holes.data();
-  Sdc::Options sdc;
-  switch (mesh.tags.boundary) {
-    case Boundary_interpolation::edge_only:
-      sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-      break;
-    case Boundary_interpolation::edge_and_corner:
-      sdc.SetVtxBoundaryInterpolation(
-          Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-      break;
-    case Boundary_interpolation::none:
-      sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_NONE);
-      break;
-  }
-  sdc.SetCreasingMethod(mesh.tags.crease_method == Crease_method::chaikin
-                            ? Sdc::Options::CREASE_CHAIKIN
-                            : Sdc::Options::CREASE_UNIFORM);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  Osd_run run;
-  run.refiner.reset(Factory::Create(
-      desc, Factory::Options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK,
-                             sdc)));
-  Far::TopologyRefiner::UniformOptions options(levels);
-  options.fullTopologyInLastLevel = true;
-  run.refiner->RefineUniform(options);
-  run.points.resize(levels + 1);
-  run.points[0].resize(mesh.vertex_count());
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-    run.points[0][v] = {mesh.positions[3 * v], mesh.positions[3 * v + 1],
-                        mesh.positions[3 * v + 2]};
-  Far::PrimvarRefinerReal<double> primvar(*run.refiner);
-  for (int level = 1; level <= levels; ++level) {
-    run.points[level].resize(run.refiner->GetLevel(level).GetNumVertices());
-    const Point* src = run.points[level - 1].data();
-    Point* dst = run.points[level].data();
-    primvar.Interpolate(level, src, dst);
-  }
-  return run;
-}
+using subdivlab::osd::cycle;
+using subdivlab::osd::Point;
 
 Mesh_buffers subdivide(const Mesh_buffers& in, bool loop, int levels) {
   subdivlab::Subdivide_options options;
@@ -125,38 +42,6 @@ Mesh_buffers subdivide(const Mesh_buffers& in, bool loop, int levels) {
   const auto result = subdivlab::subdivide_mesh(in, options);
   EXPECT_TRUE(result.ok()) << result.status.message;
   return result.value;
-}
-
-/// The edges of a mesh as (lower, higher) vertex pairs.
-std::set<std::pair<std::uint32_t, std::uint32_t>> edges_of(
-    const Mesh_buffers& m) {
-  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
-  std::size_t o = 0;
-  for (std::uint32_t k : m.face_sizes) {
-    for (std::uint32_t j = 0; j < k; ++j) {
-      const std::uint32_t a = m.face_indices[o + j],
-                          b = m.face_indices[o + (j + 1) % k];
-      edges.insert({std::min(a, b), std::max(a, b)});
-    }
-    o += k;
-  }
-  return edges;
-}
-
-std::vector<std::set<std::uint32_t>> neighbours_of(const Mesh_buffers& m) {
-  std::vector<std::set<std::uint32_t>> n(m.vertex_count());
-  for (const auto& [a, b] : edges_of(m)) {
-    n[a].insert(b);
-    n[b].insert(a);
-  }
-  return n;
-}
-
-/// A face as the cycle of its vertices, starting at the smallest.
-std::vector<int> cycle(std::vector<int> face) {
-  std::rotate(face.begin(), std::min_element(face.begin(), face.end()),
-              face.end());
-  return face;
 }
 
 /// Vertex indices in the order of their positions.
@@ -223,7 +108,7 @@ void expect_same_mesh(const Mesh_buffers& a, const Mesh_buffers& b) {
 /// a time through the tags each step writes) with OpenSubdiv's.
 void expect_same_as_opensubdiv(const Mesh_buffers& in, bool loop,
                                int levels) {
-  const Osd_run osd = osd_refine(in, loop, levels);
+  const subdivlab::osd::Run osd = subdivlab::osd::refine(in, loop, levels);
   ASSERT_TRUE(osd.refiner);
   // map[v]: OpenSubdiv's index of SubdivLab's vertex v at this level.
   std::vector<int> map(in.vertex_count());
@@ -231,53 +116,18 @@ void expect_same_as_opensubdiv(const Mesh_buffers& in, bool loop,
   Mesh_buffers parent = in;
   for (int level = 1; level <= levels; ++level) {
     SCOPED_TRACE("level " + std::to_string(level));
-    const Mesh_buffers child = subdivide(parent, loop, 1);
-    const Far::TopologyLevel& pl = osd.refiner->GetLevel(level - 1);
+    std::string error;
+    const Mesh_buffers child = subdivlab::osd::step(parent, loop, error);
+    ASSERT_EQ(error, "");
     const Far::TopologyLevel& cl = osd.refiner->GetLevel(level);
     ASSERT_EQ(child.vertex_count(), static_cast<std::size_t>(cl.GetNumVertices()));
     ASSERT_EQ(child.face_count(), static_cast<std::size_t>(cl.GetNumFaces()));
-    std::vector<int> child_map(child.vertex_count(), -1);
-    const std::uint32_t V = static_cast<std::uint32_t>(parent.vertex_count());
-    for (std::uint32_t v = 0; v < V; ++v)
-      child_map[v] = pl.GetVertexChildVertex(map[v]);
-    const auto edges = edges_of(parent);
-    const auto around = neighbours_of(child);
-    for (const auto& [a, b] : edges) {
-      std::vector<std::uint32_t> common;
-      std::set_intersection(around[a].begin(), around[a].end(),
-                            around[b].begin(), around[b].end(),
-                            std::back_inserter(common));
-      ASSERT_EQ(common.size(), 1u) << "edge " << a << "-" << b;
-      const Far::Index e = pl.FindEdge(map[a], map[b]);
-      ASSERT_NE(e, Far::INDEX_INVALID);
-      child_map[common[0]] = pl.GetEdgeChildVertex(e);
-    }
-    if (!loop) {
-      // Face points: V + E + f on SubdivLab's side; OpenSubdiv's face found
-      // by its vertices.
-      std::map<std::vector<int>, int> osd_faces;
-      for (int f = 0; f < pl.GetNumFaces(); ++f) {
-        const Far::ConstIndexArray fv = pl.GetFaceVertices(f);
-        std::vector<int> key(fv.begin(), fv.end());
-        std::sort(key.begin(), key.end());
-        osd_faces[key] = f;
-      }
-      std::size_t o = 0;
-      const std::uint32_t E = static_cast<std::uint32_t>(edges.size());
-      for (std::uint32_t f = 0; f < parent.face_count(); ++f) {
-        std::vector<int> key;
-        for (std::uint32_t j = 0; j < parent.face_sizes[f]; ++j)
-          key.push_back(map[parent.face_indices[o + j]]);
-        o += parent.face_sizes[f];
-        std::sort(key.begin(), key.end());
-        ASSERT_EQ(osd_faces.count(key), 1u);
-        child_map[V + E + f] = pl.GetFaceChildVertex(osd_faces[key]);
-      }
-    }
+    const std::vector<int> child_map = subdivlab::osd::child_origins(
+        osd, level - 1, parent, child, map, loop, error);
+    ASSERT_EQ(error, "");
     // Points.
     const std::vector<Point>& expected = osd.points[level];
     for (std::size_t v = 0; v < child.vertex_count(); ++v) {
-      ASSERT_GE(child_map[v], 0) << "vertex " << v << " has no origin";
       const Point& q = expected[child_map[v]];
       const double want[3] = {q.x, q.y, q.z};
       for (int i = 0; i < 3; ++i)
@@ -574,7 +424,7 @@ TEST(OpenSubdivReference, CreaseEditOfTheCreasedCubeSample) {
   ASSERT_TRUE(read.ok()) << read.status.message;
   Mesh_buffers m = read.value;
   crease(m, 1, 5, 2.0f);
-  const Osd_run osd = osd_refine(m, false, 2);
+  const subdivlab::osd::Run osd = subdivlab::osd::refine(m, false, 2);
   const Mesh_buffers ours = subdivide(m, false, 2);
   std::istringstream reference(
       file_text(ROOT_DIR "/tests/fixtures/crease-edit.osd.txt"));
