@@ -6,9 +6,10 @@
  */
 import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
+import type { Locator } from '@playwright/test';
 import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
-import { expectedClosedCounts, triangulatedQuads } from './helpers';
+import { expectedClosedCounts, readPng, triangulatedQuads } from './helpers';
 
 const OCTAHEDRON = { vertices: 6, edges: 12, faces: 8 };
 /** A tetrahedron as a page would hand it to load(). */
@@ -665,4 +666,43 @@ test.describe('what pages do to an element, continued', () => {
       expect(await embed.events('load', 'a')).toHaveLength(loadsBefore);
     });
   });
+});
+
+test('a tagged file in <subdiv-viewer> and in the iframe route: creases drawn in their colours unless creases="0"', async ({
+  embed,
+  page,
+}) => {
+  await embed.serve(
+    'e2e/creased.html',
+    viewerPage(
+      'Creased',
+      'subdiv-viewer, iframe { width: 360px; height: 260px; border: 0; }',
+      `<subdiv-viewer id="on" src="../meshes/cube-creased.obj" levels="1" controls="none"></subdiv-viewer>
+<subdiv-viewer id="off" src="../meshes/cube-creased.obj" levels="1" controls="none" creases="0"></subdiv-viewer>
+<iframe id="frame" title="Creased cube" src="../embed.html?src=meshes/cube-creased.obj&amp;levels=1&amp;controls=none"></iframe>`,
+    ),
+  );
+  await page.goto('./e2e/creased.html');
+  await embed.waitForLevel('on', 1);
+  await embed.waitForLevel('off', 1);
+  // The front loop is infinitely sharp: its colour, dark red, where the thick lines are drawn.
+  const infinite = [0x6b, 0x0f, 0x1a];
+  const darkRed = async (view: Locator) => {
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    const png = readPng(await view.screenshot({ omitBackground: true }));
+    let count = 0;
+    for (let y = 0; y < png.height; ++y)
+      for (let x = 0; x < png.width; ++x) {
+        const p = png.pixel(x, y);
+        if (infinite.every((c, i) => Math.abs(p[i] - c) <= 12)) count++;
+      }
+    return count;
+  };
+  expect(await darkRed(page.locator('#on'))).toBeGreaterThan(200);
+  expect(await darkRed(page.locator('#off'))).toBe(0);
+  // Level 1 of the creased cube has 24 quads, as the app's.
+  expect((await embed.reading('on')).facts?.faces).toBe(24);
+  const frameCanvas = page.frameLocator('#frame').locator('canvas');
+  await expect.poll(() => darkRed(frameCanvas), { timeout: 20_000 }).toBeGreaterThan(200);
+  await embed.snapshot('embed-creased');
 });
