@@ -154,7 +154,7 @@ test('after a cancelled step the worker restarts without the levels it kept: the
   await app.byTestId('progress.cancel').click();
   await expect(app.byTestId('progress')).toBeHidden();
   expect(await app.state()).toMatchObject({ busy: false, level: 1, levelCount: 2 });
-  await test.step('the shown level reads back as it was (recomputed from level 0 in the new worker)', async () => {
+  await test.step('the shown level reads back as it was (made again, step by step, in the new worker)', async () => {
     const again = await app.positions();
     expect(again.length).toBe(level1.length);
     expect(again.every((x, i) => x === level1[i])).toBe(true);

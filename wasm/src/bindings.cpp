@@ -32,6 +32,7 @@
 #include "core/mesh_io.h"
 #include "core/mesh_types.h"
 #include "core/render_buffers.h"
+#include "core/stencils.h"
 #include "core/subdivide.h"
 
 using emscripten::val;
@@ -487,6 +488,48 @@ val js_subdivide(const val& mesh, const val& js_options) {
   });
 }
 
+/// The stencils of the last step of `js_options` (stencils.h), as typed
+/// arrays: refined vertex v's parents and weights are [offsets[v],
+/// offsets[v + 1]); its origin is kinds[v] (an index into kindNames),
+/// elements[v], sizes[v] and ends[2v], ends[2v + 1] (0xffffffff: none).
+val js_step_stencils(const val& mesh, const val& js_options) {
+  return guarded([&] {
+    const Mesh_buffers in = from_js_mesh(mesh);
+    Subdivide_options options;
+    const Status status = from_js_options(js_options, options);
+    if (!status.ok()) return to_js_status(status);
+    const Result<Stencil_table> result = step_stencils(in, options);
+    if (!result.ok()) return to_js_status(result.status);
+    const Stencil_table& t = result.value;
+    std::vector<std::uint8_t> kinds;
+    std::vector<std::uint32_t> elements, sizes, ends;
+    for (const Stencil_origin& o : t.origins) {
+      kinds.push_back(static_cast<std::uint8_t>(o.kind));
+      elements.push_back(o.element);
+      sizes.push_back(o.size);
+      ends.insert(ends.end(), {o.ends[0], o.ends[1]});
+    }
+    val names = val::array();
+    for (int k = 0; k <= static_cast<int>(Stencil_kind::border_point); ++k)
+      names.call<void>(
+          "push", std::string(stencil_kind_name(static_cast<Stencil_kind>(k))));
+    val formulas = val::object();
+    for (const auto& [kind, text] : t.formulas) formulas.set(kind, text);
+    val out = ok_object();
+    out.set("parentVertices", t.parent_vertices);
+    out.set("offsets", to_js_array("Uint32Array", t.offsets));
+    out.set("parents", to_js_array("Uint32Array", t.parents));
+    out.set("weights", to_js_array("Float64Array", t.weights));
+    out.set("kinds", to_js_array("Uint8Array", kinds));
+    out.set("elements", to_js_array("Uint32Array", elements));
+    out.set("sizes", to_js_array("Uint32Array", sizes));
+    out.set("ends", to_js_array("Uint32Array", ends));
+    out.set("kindNames", names);
+    out.set("formulas", formulas);
+    return out;
+  });
+}
+
 val js_predict_size(const val& mesh, const val& js_options) {
   return guarded([&] {
     const Mesh_buffers in = from_js_mesh(mesh);
@@ -747,6 +790,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("write_mesh", &subdivlab::js_write_mesh);
   emscripten::function("subdivide", &subdivlab::js_subdivide);
   emscripten::function("predict_size", &subdivlab::js_predict_size);
+  emscripten::function("step_stencils", &subdivlab::js_step_stencils);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

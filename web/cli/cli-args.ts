@@ -5,6 +5,7 @@ import type { BoundaryInterpolation, CreaseMethod, MeshFormat } from '../core/me
 export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|OUTPUT.obj] [--stats]
               [--rule RULES.json] [--fixed-boundary] [--crease-method M] [--boundary B]
        subdiv info INPUT
+       subdiv stencil INPUT --level K --vertex I [--scheme S] [--triangulate] [--rule RULES.json] ...
 
   INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
   --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
@@ -27,13 +28,19 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
 subdiv info INPUT prints the mesh's facts and its OpenSubdiv tags (creases, corners, holes,
 border mode, crease method) with the notes on tags it does not apply.
 
+subdiv stencil INPUT --level K --vertex I prints, as JSON, how vertex I of level K (numbered
+as "subdiv INPUT --levels K -o OUT" numbers it) is made from the vertices of level K - 1 (as
+"--levels K-1" numbers them; the input's own order for K = 1): its kind, the valence or face
+degree, the scheme's formula, and each parent with its weight (as a fraction where exact).
+It takes the subdividing options above but -o, --stats and --levels.
+
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
 
 /** A command line that made sense. */
 export interface CliArgs {
-  /** `subdiv info INPUT` or the default, subdividing. */
-  command: 'subdivide' | 'info';
+  /** `subdiv info INPUT`, `subdiv stencil INPUT ...` or the default, subdividing. */
+  command: 'subdivide' | 'info' | 'stencil';
   input: string;
   scheme: string;
   levels: number;
@@ -48,6 +55,8 @@ export interface CliArgs {
   boundary: BoundaryInterpolation | null;
   output: { path: string; format: MeshFormat } | null;
   stats: boolean;
+  /** stencil: --vertex (levels holds --level). */
+  vertex: number;
   help: boolean;
 }
 
@@ -75,6 +84,7 @@ const NO_OPTIONS = {
   boundary: null,
   output: null,
   stats: false,
+  vertex: 0,
 } as const satisfies Partial<CliArgs>;
 
 /** Parses argv (without node and the script). Throws UsageError; scheme names are checked later. */
@@ -89,8 +99,16 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const help = values.help === true;
   if (help) return { ...NO_OPTIONS, command: 'subdivide', input: '', scheme: '', help };
   if (positionals[0] === 'info') return infoArgs(parsed);
-  if (positionals.length !== 1) {
-    throw new UsageError(positionals.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
+  const stencil = positionals[0] === 'stencil';
+  const inputs = stencil ? positionals.slice(1) : positionals;
+  if (inputs.length !== 1) {
+    throw new UsageError(inputs.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
+  }
+  const only = stencil ? (['output', 'stats', 'levels'] as const) : (['level', 'vertex'] as const);
+  for (const name of only) {
+    if (values[name] !== undefined) {
+      throw new UsageError(stencil ? `subdiv stencil takes no --${name}` : `--${name} is subdiv stencil's`);
+    }
   }
   const creaseMethod = values['crease-method'] ?? null;
   if (creaseMethod !== null && !CREASE_METHODS.includes(creaseMethod as CreaseMethod)) {
@@ -100,9 +118,8 @@ export function parseCliArgs(argv: string[]): CliArgs {
   if (boundary !== null && !BOUNDARIES.includes(boundary as BoundaryInterpolation)) {
     throw new UsageError(`--boundary must be edge, edge-and-corner or none, not "${boundary}"`);
   }
-  const levelsText = values.levels ?? '1';
-  if (!/^\d+$/.test(levelsText)) throw new UsageError(`--levels must be an integer 0 or more, not "${levelsText}"`);
-  const levels = Number(levelsText);
+  const levels = stencil ? count(values.level, '--level', 1) : count(values.levels ?? '1', '--levels', 0);
+  const vertex = stencil ? count(values.vertex, '--vertex', 0) : 0;
   const rule = values.rule ?? null;
   if (rule !== null && values.scheme !== undefined && values.scheme !== 'custom') {
     throw new UsageError(`--rule gives the rules of --scheme custom, not of ${values.scheme}`);
@@ -110,8 +127,8 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const scheme = values.scheme ?? (rule !== null ? 'custom' : 'catmull-clark');
   if (scheme === 'custom' && rule === null) throw new UsageError('--scheme custom needs --rule FILE.json');
   return {
-    command: 'subdivide',
-    input: positionals[0],
+    command: stencil ? 'stencil' : 'subdivide',
+    input: inputs[0],
     scheme,
     levels,
     triangulate: values.triangulate === true,
@@ -121,8 +138,18 @@ export function parseCliArgs(argv: string[]): CliArgs {
     boundary: boundary as BoundaryInterpolation | null,
     output: values.output === undefined ? null : { path: values.output, format: outputFormat(values.output) },
     stats: values.stats === true,
+    vertex,
     help,
   };
+}
+
+/** An integer option of at least `least` (required when `text` is undefined). */
+function count(text: string | undefined, name: string, least: number): number {
+  if (text === undefined) throw new UsageError(`subdiv stencil needs ${name}`);
+  if (!/^\d+$/.test(text) || Number(text) < least) {
+    throw new UsageError(`${name} must be an integer ${least} or more, not "${text}"`);
+  }
+  return Number(text);
 }
 
 const CREASE_METHODS: CreaseMethod[] = ['uniform', 'chaikin'];
@@ -144,6 +171,8 @@ function parse(argv: string[]) {
     options: {
       scheme: { type: 'string' },
       levels: { type: 'string' },
+      level: { type: 'string' },
+      vertex: { type: 'string' },
       triangulate: { type: 'boolean' },
       rule: { type: 'string' },
       'fixed-boundary': { type: 'boolean' },

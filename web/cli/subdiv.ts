@@ -6,14 +6,16 @@
 import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
-import type { Mesh, MeshFacts, MeshFormat, SchemeName } from '../core/mesh';
+import type { Mesh, MeshFacts, MeshFormat, SchemeName, SubdivideOptions } from '../core/mesh';
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
+import { fraction, vertexStencil } from '../core/stencils';
 import {
   formatFromFileName,
   hostOf,
   meshFacts,
   parseMesh,
   schemeNames,
+  stepStencils,
   subdivide,
   writeMesh,
 } from '../core/subdiv-core';
@@ -110,6 +112,81 @@ async function info(args: CliArgs, io: CliIo): Promise<void> {
   }
 }
 
+/** The rule set of --rule (null without), read and checked; a bad file is an InputError naming it. */
+function readRules(args: CliArgs): RuleSet | undefined {
+  if (args.rule === null) return undefined;
+  const ruleText = readInput(args.rule);
+  try {
+    return parseRuleSetText(ruleText);
+  } catch (error) {
+    if (error instanceof SubdivError) throw new InputError(`${args.rule}: ${error.message}`);
+    throw error;
+  }
+}
+
+/** The core's options for the command line's scheme, levels and flags. */
+function subdivideOptions(args: CliArgs, rules: RuleSet | undefined): SubdivideOptions {
+  return {
+    scheme: args.scheme as SchemeName,
+    levels: args.levels,
+    triangulate: args.triangulate,
+    smoothBoundary: !args.fixedBoundary,
+    ...(args.creaseMethod ? { creaseMethod: args.creaseMethod } : {}),
+    ...(args.boundary ? { boundary: args.boundary } : {}),
+    rules,
+  };
+}
+
+/** A core error of a run: a rule value names the rule file, anything else the input. */
+function inputError(args: CliArgs, error: unknown): unknown {
+  if (!(error instanceof SubdivError)) return error;
+  // Rule values are judged by the core: name the rule file, not the mesh.
+  if (args.rule !== null && error.message.startsWith('custom rules:')) {
+    return new InputError(`${args.rule}: ${error.message}`);
+  }
+  return new InputError(locate(args.input, error));
+}
+
+/**
+ * `subdiv stencil`: vertex --vertex of level --level as the weighted sum of
+ * level K - 1's vertices, with its kind, size and formula, as JSON.
+ */
+async function stencil(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
+  const text = readInput(args.input);
+  try {
+    const mesh = parseMesh(text, inputFormat(args.input, text));
+    const options = subdivideOptions(args, rules);
+    const table = stepStencils(mesh, options);
+    const count = table.kinds.length;
+    if (args.vertex >= count) {
+      throw new InputError(
+        `${args.input}: level ${args.levels} has ${count} vertices (0 to ${count - 1}), so no vertex ${args.vertex}`,
+      );
+    }
+    const s = vertexStencil(table, args.vertex);
+    const position = Array.from(subdivide(mesh, options).positions.subarray(3 * s.vertex, 3 * s.vertex + 3));
+    const size = /face|corner/.test(s.kind) ? { degree: s.size } : s.edge ? {} : { valence: s.size };
+    const out = {
+      scheme: args.scheme,
+      level: args.levels,
+      vertex: s.vertex,
+      kind: s.kind,
+      ...(s.edge ? { edge: s.edge } : s.element !== null ? { of: s.element } : {}),
+      ...size,
+      formula: s.formula,
+      parents: s.parents.map(({ vertex, weight }) => {
+        const exact = fraction(weight);
+        return exact ? { vertex, weight, fraction: exact } : { vertex, weight };
+      }),
+      sum: s.parents.reduce((total, p) => total + p.weight, 0),
+      position,
+    };
+    io.stdout(`${JSON.stringify(out, null, 2)}\n`);
+  } catch (error) {
+    throw inputError(args, error);
+  }
+}
+
 async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'info') return info(args, io);
   await initNode();
@@ -117,41 +194,18 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (!schemes.includes(args.scheme)) {
     throw new UsageError(`unknown scheme "${args.scheme}" (known: ${schemes.join(', ')})`);
   }
-  let rules: RuleSet | undefined;
-  if (args.rule !== null) {
-    const ruleText = readInput(args.rule);
-    try {
-      rules = parseRuleSetText(ruleText);
-    } catch (error) {
-      if (error instanceof SubdivError) throw new InputError(`${args.rule}: ${error.message}`);
-      throw error;
-    }
-  }
+  const rules = readRules(args);
+  if (args.command === 'stencil') return stencil(args, io, rules);
   const text = readInput(args.input);
   let result: Mesh;
   let ms: number;
   try {
     const mesh = parseMesh(text, inputFormat(args.input, text));
     const start = performance.now();
-    result = subdivide(mesh, {
-      scheme: args.scheme as SchemeName,
-      levels: args.levels,
-      triangulate: args.triangulate,
-      smoothBoundary: !args.fixedBoundary,
-      ...(args.creaseMethod ? { creaseMethod: args.creaseMethod } : {}),
-      ...(args.boundary ? { boundary: args.boundary } : {}),
-      rules,
-    });
+    result = subdivide(mesh, subdivideOptions(args, rules));
     ms = performance.now() - start;
   } catch (error) {
-    if (error instanceof SubdivError) {
-      // Rule values are judged by the core: name the rule file, not the mesh.
-      if (args.rule !== null && error.message.startsWith('custom rules:')) {
-        throw new InputError(`${args.rule}: ${error.message}`);
-      }
-      throw new InputError(locate(args.input, error));
-    }
-    throw error;
+    throw inputError(args, error);
   }
   if (args.output) {
     try {

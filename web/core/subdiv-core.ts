@@ -9,6 +9,7 @@
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
+import type { StencilTable } from './stencils';
 import { SubdivError, type SubdivErrorCode } from './subdiv-error';
 
 /** Where the `.wasm` comes from. Without either field the browser fetches the file next to the glue. */
@@ -38,6 +39,7 @@ interface CoreModule {
   ): RawResult<object>;
   subdivide(mesh: Mesh, options: CoreOptions): RawResult<{ mesh: Mesh }>;
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
+  step_stencils(mesh: Mesh, options: CoreOptions): RawResult<StencilTable>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -234,6 +236,19 @@ function coreOptions(mesh: Mesh, options: SubdivideOptions): CoreOptions {
   if (rules === undefined || options.scheme !== 'custom') return rest;
   const limits = compileLimitsFor(mesh.faceSizes, mesh.faceIndices, Math.floor(mesh.positions.length / 3));
   return { ...rest, rules: compileRuleSet(rules, limits) };
+}
+
+/**
+ * The stencils of the last step of `subdivide(mesh, options)`: its result's
+ * vertices (numbered as that result) as weighted sums of the vertices of
+ * the level before (numbered as `subdivide` with one level fewer), from the
+ * step's own point pass (stencils.ts).
+ */
+export function stepStencils(mesh: Mesh, options: SubdivideOptions): StencilTable {
+  const { ok: _ok, ...table } = unwrap(module().step_stencils(mesh, coreOptions(mesh, options))) as StencilTable & {
+    ok: true;
+  };
+  return table;
 }
 
 /** Counts and peak heap bytes predicted for `subdivide(mesh, options)`, without subdividing. */

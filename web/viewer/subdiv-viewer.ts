@@ -574,9 +574,10 @@ export class SubdivViewer {
   /**
    * Runs `request` on level `k`'s handle in the worker. A worker that
    * restarted since (a cancel, a crash) no longer keeps the level: it is
-   * kept again (level 0, from its mesh) or recomputed from level 0 in one
-   * call (the same result: k single steps equal one call of k levels), and
-   * `request` runs once more.
+   * kept again (level 0, from its mesh) or made again from the level before
+   * it, one step at a time as it was made (one call of k levels gives the
+   * same mesh numbered otherwise, and the page's buffers, picks and
+   * stencils go by the numbers), and `request` runs once more.
    */
   private async withHandle<T>(k: number, request: (handle: LevelHandle) => Promise<T>): Promise<T> {
     for (let attempt = 0; ; attempt++) {
@@ -597,8 +598,8 @@ export class SubdivViewer {
       if (!this.source) throw new CancelledError();
       handle = await this.core.keep(this.source, level.data.facts);
     } else {
-      const base = await this.handleOf(0);
-      handle = (await this.core.subdivide(base, this.stepOptions(0, k))).handle;
+      const before = await this.handleOf(k - 1);
+      handle = (await this.core.subdivide(before, this.stepOptions(k - 1, 1))).handle;
     }
     // A load or reset while waiting dropped the level: the worker need not keep it.
     if (this.levels[k] !== level) {

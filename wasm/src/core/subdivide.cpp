@@ -49,6 +49,7 @@
 #include "refine/sqrt3_host.h"
 #include "scheme_table.h"
 #include "size_model.h"
+#include "stencils.h"
 
 namespace subdivlab {
 namespace {
@@ -327,6 +328,13 @@ Status prepare_level(const Mesh_buffers& in, const Subdivide_options& options,
   return Status::success();
 }
 
+/// What step_stencils asks of a run: the stencils of its last step
+/// (stencils.h), or why there are none.
+struct Stencil_request {
+  Stencil_table table;
+  std::string error;
+};
+
 /// Runs the steps of `options` on a fast host (refine/) from `parent`
 /// (level 0 from prepare_level, with `counts` and `marks` control edges).
 /// Each step is checked against the memory limit first, as the CGAL steps
@@ -371,12 +379,12 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
                         const refine::Creasing& creasing,
                         const Subdivide_options& options,
                         const Mesh_buffers& in, double input, Mesh_buffers& out,
-                        int& level) {
+                        int& level, Stencil_request* stencils) {
   refine::Primal_scratch scratch;
   refine::Crease_scratch crease_scratch;
   const Status s = run_fast_steps(
       parent, counts, marks, options, in, input, out, level,
-      [&](const refine::Level& p, refine::Level& c, int, bool last) {
+      [&](refine::Level& p, refine::Level& c, int, bool last) {
         const std::uint32_t uncovered =
             refine::primal_uncovered_valence(p, mask, scratch);
         if (uncovered != 0)
@@ -386,9 +394,15 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
         else
           refine::refine_ptq_topology(p, c, last);
         if (p.creased) refine::refine_crease_tables(p, creasing, mask.pqq, c);
-        refine::refine_primal_points(p, mask, scratch, c);
-        if (p.creased)
-          refine::apply_crease_rules(p, creasing, crease_scratch, c);
+        const auto points = [&](const refine::Level& from, refine::Level& to) {
+          refine::refine_primal_points(from, mask, scratch, to);
+          if (from.creased)
+            refine::apply_crease_rules(from, creasing, crease_scratch, to);
+        };
+        points(p, c);
+        if (last && stencils)
+          stencils->error = detail::probe_stencils(
+              p, c, mask.pqq ? "pqq" : "ptq", false, points, stencils->table);
         return Status::success();
       },
       [&] {
@@ -430,7 +444,8 @@ bool creasing_of(const Mesh_buffers& in, const Subdivide_options& options,
 Status run_dual_steps(refine::Level& parent, Counts counts,
                       const refine::Dual_mask& mask,
                       const Subdivide_options& options, const Mesh_buffers& in,
-                      double input, Mesh_buffers& out, int& level) {
+                      double input, Mesh_buffers& out, int& level,
+                      Stencil_request* stencils) {
   refine::add_face_vertex_halfedges(parent);
   refine::Dual_scratch scratch;
   return run_fast_steps(
@@ -443,7 +458,13 @@ Status run_dual_steps(refine::Level& parent, Counts counts,
         // gone).
         refine::release_unread_tables(p);
         refine::refine_dqq_topology(p, scratch, c, last);
-        refine::refine_dual_points(p, mask, scratch, c);
+        const auto points = [&](const refine::Level& from, refine::Level& to) {
+          refine::refine_dual_points(from, mask, scratch, to);
+        };
+        points(p, c);
+        if (last && stencils)
+          stencils->error = detail::probe_stencils(p, c, "dqq", false, points,
+                                                   stencils->table);
         return Status::success();
       },
       [&] { scratch = refine::Dual_scratch(); });
@@ -455,13 +476,13 @@ Status run_dual_steps(refine::Level& parent, Counts counts,
 Status run_sqrt3_steps(refine::Level& parent, Counts counts,
                        const refine::Primal_mask& mask,
                        const Subdivide_options& options, const Mesh_buffers& in,
-                       double input, Mesh_buffers& out, int& level) {
+                       double input, Mesh_buffers& out, int& level,
+                       Stencil_request* stencils) {
   refine::Sqrt3_scratch scratch;
   refine::Primal_scratch points;
   return run_fast_steps(
       parent, counts, 0, options, in, input, out, level,
-      [&](const refine::Level& p, refine::Level& c, int global_step,
-          bool last) {
+      [&](refine::Level& p, refine::Level& c, int global_step, bool last) {
         const std::uint32_t uncovered =
             refine::primal_uncovered_valence(p, mask, points);
         if (uncovered != 0)
@@ -474,7 +495,15 @@ Status run_sqrt3_steps(refine::Level& parent, Counts counts,
             return sqrt3_border_refusal(options, global_step, multi);
         }
         refine::refine_sqrt3_topology(p, border_step, scratch, c, last);
-        refine::refine_sqrt3_points(p, mask, border_step, scratch, points, c);
+        const auto step_points = [&](const refine::Level& from,
+                                     refine::Level& to) {
+          refine::refine_sqrt3_points(from, mask, border_step, scratch, points,
+                                      to);
+        };
+        step_points(p, c);
+        if (last && stencils)
+          stencils->error = detail::probe_stencils(
+              p, c, "sqrt3", border_step, step_points, stencils->table);
         return Status::success();
       },
       [&] {
@@ -487,13 +516,20 @@ Status run_sqrt3_steps(refine::Level& parent, Counts counts,
 Status run_pqt_steps(refine::Level& parent, Counts counts, double marks,
                      const refine::Quad_triangle_mask& mask,
                      const Subdivide_options& options, const Mesh_buffers& in,
-                     double input, Mesh_buffers& out, int& level) {
+                     double input, Mesh_buffers& out, int& level,
+                     Stencil_request* stencils) {
   refine::Primal_scratch scratch;
   return run_fast_steps(
       parent, counts, marks, options, in, input, out, level,
-      [&](const refine::Level& p, refine::Level& c, int, bool last) {
+      [&](refine::Level& p, refine::Level& c, int, bool last) {
         refine::refine_pqt_topology(p, c, last);
-        refine::refine_pqt_points(p, mask, scratch, c);
+        const auto points = [&](const refine::Level& from, refine::Level& to) {
+          refine::refine_pqt_points(from, mask, scratch, to);
+        };
+        points(p, c);
+        if (last && stencils)
+          stencils->error = detail::probe_stencils(p, c, "pqt", false, points,
+                                                   stencils->table);
         return Status::success();
       },
       [&] { scratch = refine::Primal_scratch(); });
@@ -602,8 +638,13 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
   return result;
 }
 
-Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
-                                    const Subdivide_options& options) {
+namespace {
+
+/// subdivide_mesh; with `stencils`, also the last step's stencils (fast
+/// hosts only: `stencils->error` says so otherwise).
+Result<Mesh_buffers> run_subdivision(const Mesh_buffers& in,
+                                     const Subdivide_options& options,
+                                     Stencil_request* stencils) {
   Result<Mesh_buffers> result;
   int level = options.start_level;  // for messages
   try {
@@ -640,17 +681,24 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
       if (s.ok()) s = predict_run(options, counts, input, marks, true, run);
       if (s.ok() && fast.ok)
         s = run_primal_steps(level0, counts, marks, fast.mask, creasing,
-                             options, in, input, result.value, level);
+                             options, in, input, result.value, level, stencils);
       else if (s.ok() && sqrt3.ok)
         s = run_sqrt3_steps(level0, counts, sqrt3.mask, options, in, input,
-                            result.value, level);
+                            result.value, level, stencils);
       else if (s.ok() && pqt.ok)
         s = run_pqt_steps(level0, counts, marks, pqt.mask, options, in, input,
-                          result.value, level);
+                          result.value, level, stencils);
       else if (s.ok())
         s = run_dual_steps(level0, counts, dual.mask, options, in, input,
-                           result.value, level);
+                           result.value, level, stencils);
       if (!s.ok()) result = Result<Mesh_buffers>{s, {}};
+      return result;
+    }
+    if (stencils) {
+      stencils->error =
+          options.levels > 0
+              ? "stencils come from the fast hosts, and CGAL's were asked for"
+              : "stencils are of a step, and no step was asked for";
       return result;
     }
     Mesh mesh;
@@ -722,6 +770,39 @@ Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
                           " of " + options.scheme + ": unknown exception");
   }
   return result;
+}
+
+}  // namespace
+
+Result<Mesh_buffers> subdivide_mesh(const Mesh_buffers& in,
+                                    const Subdivide_options& options) {
+  return run_subdivision(in, options, nullptr);
+}
+
+Result<Stencil_table> step_stencils(const Mesh_buffers& in,
+                                    const Subdivide_options& options) {
+  Stencil_request request;
+  const Result<Mesh_buffers> run = run_subdivision(in, options, &request);
+  if (!run.ok()) return {run.status, {}};
+  if (!request.error.empty() || request.table.offsets.empty())
+    return {Status::error(Status_code::invalid_argument,
+                          "No stencils for " + options.scheme + ": " +
+                              (request.error.empty() ? "no step was made"
+                                                     : request.error) +
+                              "."),
+            {}};
+  // The formula of each kind that occurs.
+  std::vector<bool> seen(16, false);
+  for (const Stencil_origin& o : request.table.origins) {
+    const auto k = static_cast<std::size_t>(o.kind);
+    if (seen[k]) continue;
+    seen[k] = true;
+    const std::string f = stencil_formula(
+        options.scheme == "custom" ? "custom" : options.scheme, o.kind);
+    if (!f.empty())
+      request.table.formulas.push_back({stencil_kind_name(o.kind), f});
+  }
+  return {Status::success(), std::move(request.table)};
 }
 
 std::vector<std::string> scheme_names() {
