@@ -187,10 +187,19 @@ export class SceneView {
       new PointsMaterial({ vertexColors: true, size: 12, sizeAttenuation: false }),
     );
     this.cornerPoints.renderOrder = 4;
-    // The selection: wider than a crease and drawn before it, so a sharp edge shows both.
+    // The selection: three times as wide as a crease (half of a line on an edge is behind the
+    // surface), so that a sharp edge shows its colour inside the selection.
     this.selectedLines = new LineSegments2(
       new LineSegmentsGeometry(),
-      new LineMaterial({ color: VIEW_COLORS.selection, linewidth: 9 }),
+      // Pushed back half as far as the surface (polygonOffset 1), so that a crease drawn on
+      // the same edge stays in front of it and it in front of the surface.
+      new LineMaterial({
+        color: VIEW_COLORS.selection,
+        linewidth: 12,
+        polygonOffset: true,
+        polygonOffsetFactor: 0.5,
+        polygonOffsetUnits: 0.5,
+      }),
     );
     this.selectedLines.renderOrder = 2.5;
     this.selectedPoints = new Points(
