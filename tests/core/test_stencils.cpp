@@ -46,11 +46,10 @@ std::vector<std::pair<std::uint32_t, double>> row(const Stencil_table& t,
   return out;
 }
 
-void expect_stencils_give_points(const std::string& name,
-                                 const Subdivide_options& o) {
-  const Mesh_buffers in = fixture(name);
+void expect_stencils_give_points_of(const Mesh_buffers& in,
+                                    const Subdivide_options& o) {
   for (int k = 1; k <= 2; ++k) {
-    SCOPED_TRACE(name + " " + o.scheme + " level " + std::to_string(k));
+    SCOPED_TRACE(o.scheme + " level " + std::to_string(k));
     Subdivide_options step = o;
     step.levels = k;
     const Result<Stencil_table> t = step_stencils(in, step);
@@ -75,6 +74,12 @@ void expect_stencils_give_points(const std::string& name,
       }
     }
   }
+}
+
+void expect_stencils_give_points(const std::string& name,
+                                 const Subdivide_options& o) {
+  SCOPED_TRACE(name);
+  expect_stencils_give_points_of(fixture(name), o);
 }
 
 TEST(Stencils, GiveEveryPointOfEverySchemeOnClosedAndOpenMeshes) {
@@ -212,6 +217,29 @@ TEST(Stencils, NameEachVertexByItsOrigin) {
   EXPECT_DOUBLE_EQ(b2[0].second, 19.0 / 27);
   EXPECT_DOUBLE_EQ(b2[1].second, 4.0 / 27);
   EXPECT_EQ(s1.value.origins[0].kind, Stencil_kind::relaxed_vertex);
+}
+
+TEST(Stencils, FollowTheCreaseRules) {
+  // The cube with its front loop (4 5 7 6) infinitely sharp: a vertex on it
+  // takes the crease rule, 3/4 of itself and 1/8 of each sharp neighbour;
+  // an edge point on it the midpoint.
+  Mesh_buffers m = fixture("cube.off");
+  m.tags.crease_edges = {4, 5, 5, 7, 7, 6, 6, 4};
+  m.tags.crease_sharpness = {10, 10, 10, 10};
+  const Result<Stencil_table> t =
+      step_stencils(m, options_of("catmull-clark", 1));
+  ASSERT_TRUE(t.ok()) << t.status.message;
+  const auto r = row(t.value, 5);
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_EQ(r[0], std::make_pair(4u, 0.125));
+  EXPECT_EQ(r[1], std::make_pair(5u, 0.75));
+  EXPECT_EQ(r[2], std::make_pair(7u, 0.125));
+  for (std::uint32_t v = 8; v < 20; ++v) {
+    const Stencil_origin& o = t.value.origins[v];
+    const bool sharp = o.ends[0] >= 4 && o.ends[1] >= 4;
+    if (sharp) EXPECT_EQ(row(t.value, v).size(), 2u) << "edge point " << v;
+  }
+  expect_stencils_give_points_of(m, options_of("catmull-clark", 1));
 }
 
 TEST(Stencils, RefusedWhereThereIsNoStepOrNoFastHost) {
