@@ -22,7 +22,7 @@ const OSD_LEVEL_2 = new Map(
 
 /** Where control vertex `v` is drawn, in page pixels. */
 async function vertexOnScreen(app: SubdivLabPage, v: number): Promise<{ x: number; y: number }> {
-  const at = await app.page.evaluate((i) => window.__subdivlab?.controlVertexOnScreen(i) ?? null, v);
+  const at = await app.page.evaluate((i) => window.__subdivlab?.vertexOnScreen(i) ?? null, v);
   if (!at) throw new Error(`control vertex ${v} is not in view`);
   return at;
 }

@@ -11,6 +11,7 @@ import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
 import { CreaseEditor } from '../edit/crease-editor';
 import { nextRenderMode } from '../render/render-mode';
+import { StencilInspector } from '../teach/stencil-inspector';
 import { ConfirmDialog } from '../ui/confirm-dialog';
 import { CreasePanel } from '../ui/crease-panel';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
@@ -28,6 +29,7 @@ import { RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { SharePanel } from '../ui/share-panel';
 import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
+import { StencilPanel } from '../ui/stencil-panel';
 import { handleViewKey } from '../ui/view-keys';
 import { messageOf } from '../viewer/error-message';
 import { formatBytes } from '../viewer/memory-budget';
@@ -58,6 +60,8 @@ export class AppShell {
   private readonly display: DisplayPanel;
   private readonly creaseEditor: CreaseEditor;
   private readonly creasePanel: CreasePanel;
+  private readonly inspector: StencilInspector;
+  private readonly stencilPanel: StencilPanel;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
   private readonly exportActions: ExportActions;
@@ -136,8 +140,22 @@ export class AppShell {
     this.creaseEditor = new CreaseEditor(this.viewer, (error) =>
       this.showError(this.viewer.state.modelName ?? 'mesh', error),
     );
+    this.inspector = new StencilInspector(this.viewer, (error) =>
+      this.showError(this.viewer.state.modelName ?? 'mesh', error),
+    );
+    this.stencilPanel = new StencilPanel({
+      onInspecting: (on) => this.setClickMode(on ? 'inspect' : null),
+      onVertex: (vertex) => void this.inspector.select(vertex),
+    });
+    this.inspector.onChange((state) => this.stencilPanel.update(state));
+    this.stencilPanel.update(this.inspector.state);
+    // A click on the view picks for the crease editor or the inspector, whichever is on.
+    this.viewer.view.onClick = (click) => {
+      this.creaseEditor.click(click);
+      this.inspector.click(click);
+    };
     this.creasePanel = new CreasePanel({
-      onEditing: (on) => this.creaseEditor.setEditing(on),
+      onEditing: (on) => this.setClickMode(on ? 'creases' : null),
       onSharpness: (sharpness) => void this.creaseEditor.setSharpness(sharpness),
       onUndo: () => this.creaseEditor.undo(),
       onRedo: () => this.creaseEditor.redo(),
@@ -209,6 +227,7 @@ export class AppShell {
       this.rules.element,
       this.levels.element,
       this.creasePanel.element,
+      this.stencilPanel.element,
       this.display.element,
       shortcutsHelp(),
     );
@@ -240,8 +259,9 @@ export class AppShell {
         open: () => this.fileInput.click(),
         cancel: () => this.viewer.cancel(),
         copyImage: () => void this.exportActions.copyImage(false),
+        toggleInspector: () => this.setClickMode(this.inspector.state.inspecting ? null : 'inspect'),
         creases: {
-          toggleEditing: () => this.creaseEditor.setEditing(!this.creaseEditor.state.editing),
+          toggleEditing: () => this.setClickMode(this.creaseEditor.state.editing ? null : 'creases'),
           sharpness: (sharpness) => {
             const { editing, selection } = this.creaseEditor.state;
             if (!editing || !selection) return false;
@@ -301,8 +321,8 @@ export class AppShell {
       },
       positions: async () => Array.from((await this.viewer.meshOf())?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
-      controlVertexOnScreen: (v) => {
-        const at = this.viewer.view.controlVertexOnScreen(v);
+      vertexOnScreen: (v, shown) => {
+        const at = this.viewer.view.vertexOnScreen(v, shown);
         if (!at) return null;
         const rect = this.viewer.view.canvas.getBoundingClientRect();
         return { x: rect.left + at.x, y: rect.top + at.y };
@@ -368,6 +388,15 @@ export class AppShell {
       this.showError(name, error);
       return false;
     }
+  }
+
+  /** What a click on the view does: pick for the crease editor, for the stencil inspector, or neither. */
+  private setClickMode(mode: 'creases' | 'inspect' | null): void {
+    // One at a time: the one going off first, so that its marks go before the other's come.
+    if (mode !== 'creases') this.creaseEditor.setEditing(false);
+    if (mode !== 'inspect') this.inspector.setInspecting(false);
+    if (mode === 'creases') this.creaseEditor.setEditing(true);
+    if (mode === 'inspect') this.inspector.setInspecting(true);
   }
 
   /** Names the file's tags that the core reads but does not apply (their lines), or hides such a notice of an earlier file. */

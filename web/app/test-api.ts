@@ -58,8 +58,11 @@ export interface SubdivLabTestApi {
   positions(): Promise<number[]>;
   /** The link Share would copy; null when there is none (a local file, no model). */
   shareLink(): string | null;
-  /** Where control vertex `v` is drawn, in page (client) pixels, so a test can click it or an edge; null: not in view. */
-  controlVertexOnScreen(v: number): { x: number; y: number } | null;
+  /**
+   * Where vertex `v` of the control mesh (with `shown`, of the shown level) is drawn, in page (client)
+   * pixels, so a test can click it or an edge; null: not in view.
+   */
+  vertexOnScreen(v: number, shown?: boolean): { x: number; y: number } | null;
 }
 
 declare global {

@@ -13,6 +13,7 @@ import {
   parseForView,
   predictSize,
   schemeNames,
+  stepStencils,
   subdivideForView,
   viewMesh,
 } from './subdiv-core';
@@ -149,6 +150,12 @@ const handlers: Handlers = {
     const { mesh, facts, buffers } = subdivideForView(parent.mesh, options, parent.facts);
     const level = levelData({ mesh, facts, orientation: parent.orientation }, buffers, performance.now() - start);
     return { value: level, transfer: buffersOf(level) };
+  },
+  async stencils({ handle, options }) {
+    await init();
+    const table = stepStencils(keptLevel(handle).mesh, options);
+    const arrays = [table.offsets, table.parents, table.weights, table.kinds, table.elements, table.sizes, table.ends];
+    return { value: table, transfer: arrays.map((a) => a.buffer) };
   },
   async predict({ handle, options }) {
     await init();

@@ -10,6 +10,7 @@
  */
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
+import type { StencilTable } from './stencils';
 import { SubdivError } from './subdiv-error';
 import workerUrl from './subdiv-worker.ts?worker&url';
 import type {
@@ -298,6 +299,11 @@ export class CoreSession {
    */
   subdivide(handle: LevelHandle, options: SubdivideOptions): Promise<LevelData> {
     return this.client.request(this, 'subdivide', { handle, options });
+  }
+
+  /** The stencils of `subdivide(handle, options)`'s last step (stencils.ts). */
+  stencils(handle: LevelHandle, options: SubdivideOptions): Promise<StencilTable> {
+    return this.client.request(this, 'stencils', { handle, options });
   }
 
   /** Predicted counts and peak bytes of `subdivide(handle, options)`. */

@@ -7,6 +7,7 @@
  */
 import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
+import type { StencilTable } from './stencils';
 import type { SubdivErrorCode } from './subdiv-error';
 
 /**
@@ -49,6 +50,8 @@ export interface WorkerRequests {
   keep: { args: { mesh: Mesh; facts: MeshFacts }; result: LevelHandle };
   /** One or more steps of a scheme from a kept level; keeps the result. */
   subdivide: { args: { handle: LevelHandle; options: SubdivideOptions }; result: LevelData };
+  /** The stencils of a step from a kept level (its result's vertices from the level's), without keeping the result. */
+  stencils: { args: { handle: LevelHandle; options: SubdivideOptions }; result: StencilTable };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */

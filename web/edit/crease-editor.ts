@@ -45,7 +45,6 @@ export class CreaseEditor {
     private readonly viewer: SubdivViewer,
     private readonly onError: (error: unknown) => void,
   ) {
-    viewer.view.onClick = (click) => this.click(click);
     viewer.onChange(() => {
       this.forgetIfNewModel();
       this.emit();

@@ -31,8 +31,9 @@ import { TrackballControls } from 'three/addons/controls/TrackballControls.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
-import { type ControlPick, pickControl, screenPointOf } from './control-pick';
+import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
 import type { LevelGraphics } from './level-graphics';
+import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
 import type { ViewState } from './view-state';
@@ -48,8 +49,10 @@ export const VIEW_COLORS = {
   control: '#e8590c',
   curves: '#c2255c',
   bbox: '#6b7280',
-  /** The control edges and vertex the crease editor has selected. */
+  /** The control edges and vertex the crease editor has selected, and the vertex the stencil inspector shows. */
   selection: '#15aabf',
+  /** The parents of that vertex in the stencil inspector. */
+  parents: '#e8590c',
 } as const;
 
 /** A click on the view: CSS pixels from its top left, and the modifier keys held. */
@@ -117,8 +120,15 @@ export class SceneView {
   private readonly cornerPoints: Points<BufferGeometry, PointsMaterial>;
   private readonly selectedLines: LineSegments2;
   private readonly selectedPoints: Points<BufferGeometry, PointsMaterial>;
-  /** Level 0's graphics (the control mesh), for picking. */
+  /** The stencil inspector's parents (points) and their weights (labels over the canvas). */
+  private readonly parentPoints: Points<BufferGeometry, PointsMaterial>;
+  /** Thin lines from the inspected vertex to each parent. */
+  private readonly parentLines: LineSegments;
+  private readonly labels = new CSS2DRenderer();
+  private labelObjects: CSS2DObject[] = [];
+  /** Level 0's graphics (the control mesh) and the shown level's, for picking. */
   private control: LevelGraphics | null = null;
+  private shown: LevelGraphics | null = null;
   private readonly smoothMaterial: MeshLambertMaterial;
   private readonly flatMaterial: MeshLambertMaterial;
   private bboxHelper: Box3Helper | null = null;
@@ -207,6 +217,18 @@ export class SceneView {
       new PointsMaterial({ color: VIEW_COLORS.selection, size: 18, sizeAttenuation: false }),
     );
     this.selectedPoints.renderOrder = 3.5;
+    this.parentPoints = new Points(
+      new BufferGeometry(),
+      new PointsMaterial({ color: VIEW_COLORS.parents, size: 12, sizeAttenuation: false }),
+    );
+    this.parentPoints.renderOrder = 3.5;
+    this.parentLines = new LineSegments(
+      new BufferGeometry(),
+      new LineBasicMaterial({ color: VIEW_COLORS.parents, transparent: true, opacity: 0.7 }),
+    );
+    this.parentLines.renderOrder = 3;
+    this.labels.domElement.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
+    container.append(this.labels.domElement);
     for (const object of [
       this.surface,
       this.edgeLines,
@@ -216,6 +238,8 @@ export class SceneView {
       this.cornerPoints,
       this.selectedLines,
       this.selectedPoints,
+      this.parentPoints,
+      this.parentLines,
     ]) {
       object.visible = false;
       object.frustumCulled = false;
@@ -276,6 +300,7 @@ export class SceneView {
 
   /** Shows a level (null: nothing). The caller keeps ownership of `graphics`. */
   setLevel(graphics: LevelGraphics | null): void {
+    this.shown = graphics;
     if (graphics) {
       showParts(this.surface, graphics.surfaceParts);
       for (const material of [this.smoothMaterial, this.flatMaterial]) {
@@ -418,18 +443,27 @@ export class SceneView {
     this.onViewChange?.();
   }
 
-  /** The control vertex or edge drawn under (x, y), CSS pixels from the view's top left (see control-pick.ts). */
-  pickControl(x: number, y: number): ControlPick | null {
+  /** The control vertex or edge drawn under (x, y), CSS pixels from the view's top left (see pick.ts). */
+  pickControl(x: number, y: number): Pick | null {
     if (!this.control) return null;
     const { width, height } = this.size;
-    return pickControl(this.control, this.camera, x, y, width, height);
+    return pickElement(this.control, this.camera, x, y, width, height, true);
   }
 
-  /** Where control vertex `v` is drawn, CSS pixels from the view's top left (null: not in view). */
-  controlVertexOnScreen(v: number): { x: number; y: number } | null {
-    if (!this.control) return null;
+  /** The vertex of the shown level drawn under (x, y), or null. */
+  pickVertex(x: number, y: number): number | null {
+    if (!this.shown) return null;
     const { width, height } = this.size;
-    return screenPointOf(this.control, this.camera, v, width, height);
+    const pick = pickElement(this.shown, this.camera, x, y, width, height, false);
+    return pick?.kind === 'vertex' ? pick.vertex : null;
+  }
+
+  /** Where vertex `v` of the control mesh (or, with `shown`, of the shown level) is drawn, CSS pixels from the view's top left (null: not in view). */
+  vertexOnScreen(v: number, shown = false): { x: number; y: number } | null {
+    const level = shown ? this.shown : this.control;
+    if (!level) return null;
+    const { width, height } = this.size;
+    return screenPointOf(level, this.camera, v, width, height);
   }
 
   /**
@@ -445,6 +479,49 @@ export class SceneView {
     this.selectedPoints.geometry = new BufferGeometry();
     this.selectedPoints.geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
     this.selectedPoints.visible = points.length > 0;
+    this.dirty = true;
+  }
+
+  /**
+   * Marks parent vertices (`parents`: x y z each) with points and labels
+   * (`labels[i]` at parent i, e.g. its weight "3/8"), each joined by a thin
+   * line to `vertex`, the point they make (marked with
+   * {@link setSelection}); empty arrays clear them.
+   */
+  setParents(parents: Float32Array, labels: readonly string[], vertex: readonly number[] = []): void {
+    this.parentPoints.geometry.dispose();
+    this.parentPoints.geometry = new BufferGeometry();
+    this.parentPoints.geometry.setAttribute('position', new Float32BufferAttribute(parents, 3));
+    this.parentPoints.visible = parents.length > 0;
+    const spokes = new Float32Array(2 * parents.length);
+    if (vertex.length === 3) {
+      for (let i = 0; i < parents.length / 3; ++i) {
+        spokes.set(vertex, 6 * i);
+        spokes.set(parents.subarray(3 * i, 3 * i + 3), 6 * i + 3);
+      }
+    }
+    this.parentLines.geometry.dispose();
+    this.parentLines.geometry = new BufferGeometry();
+    this.parentLines.geometry.setAttribute('position', new Float32BufferAttribute(spokes, 3));
+    this.parentLines.visible = vertex.length === 3 && parents.length > 0;
+    for (const object of this.labelObjects) {
+      this.scene.remove(object);
+      object.element.remove();
+    }
+    this.labelObjects = labels.map((text, i) => {
+      const element = document.createElement('span');
+      element.textContent = text;
+      element.dataset.testid = 'view.stencil-label';
+      element.style.cssText =
+        'font:12px/1.3 system-ui,sans-serif;padding:0 4px;border-radius:3px;' +
+        `background:rgba(255,255,255,0.88);color:#1f2937;border:1px solid ${VIEW_COLORS.parents}`;
+      const object = new CSS2DObject(element);
+      object.position.fromArray(parents, 3 * i);
+      // Above its point, so that the point stays visible.
+      object.center.set(0.5, 1.35);
+      this.scene.add(object);
+      return object;
+    });
     this.dirty = true;
   }
 
@@ -480,6 +557,7 @@ export class SceneView {
   render(): void {
     this.dirty = false;
     this.renderer.draw(this.scene, this.camera, this.context, this.canvas.width, this.canvas.height, this.background);
+    if (this.labelObjects.length > 0) this.labels.render(this.scene, this.camera);
     this.onDraw?.();
   }
 
@@ -536,10 +614,14 @@ export class SceneView {
     (this.curveLines.material as LineBasicMaterial).dispose();
     this.creaseLines.material.dispose();
     (this.cornerPoints.material as PointsMaterial).dispose();
-    for (const object of [this.selectedLines, this.selectedPoints]) {
+    this.setParents(new Float32Array(0), []);
+    this.labels.domElement.remove();
+    for (const object of [this.selectedLines, this.selectedPoints, this.parentPoints]) {
       object.geometry.dispose();
       object.material.dispose();
     }
+    this.parentLines.geometry.dispose();
+    (this.parentLines.material as LineBasicMaterial).dispose();
     this.canvas.remove();
   }
 
@@ -562,6 +644,7 @@ export class SceneView {
     this.canvas.height = Math.round(height * ratio);
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
+    this.labels.setSize(width, height);
     this.controls.handleResize();
     // Off screen (maybe with its GPU copies given back) it draws when it comes back.
     if (this.onScreen) this.render();

@@ -12,6 +12,8 @@ export interface ShortcutHandlers {
   open?: () => void;
   cancel: () => void;
   copyImage: () => void;
+  /** Stencil inspector on or off (absent where there is none). */
+  toggleInspector?: () => void;
   /** Crease editing (absent where there is none, as in an embedded viewer). */
   creases?: {
     toggleEditing: () => void;
@@ -39,6 +41,7 @@ export const SHORTCUTS: readonly { keys: string; action: string }[] = [
   { keys: 'M', action: 'Edit creases: click a control edge or vertex (Alt+click: an edge loop)' },
   { keys: '0 … 9 / I', action: 'Sharpness of the selected creases (I: infinitely sharp)' },
   { keys: 'Ctrl+Z / Ctrl+Shift+Z', action: 'Undo / redo a crease edit' },
+  { keys: 'W', action: 'Inspect stencils: click a vertex of level 1 or higher for its parents and weights' },
   { keys: 'Esc', action: 'Cancel a running step' },
   { keys: 'Ctrl+C', action: 'Copy the view as PNG' },
 ];
@@ -98,6 +101,7 @@ export function installShortcuts(
       ']': () => handlers.stepLevel(1),
       ...(handlers.open ? { o: handlers.open } : {}),
       ...(creases ? { m: creases.toggleEditing } : {}),
+      ...(handlers.toggleInspector ? { w: handlers.toggleInspector } : {}),
       Escape: handlers.cancel,
     };
     const run = action[event.key.length === 1 ? event.key.toLowerCase() : event.key];

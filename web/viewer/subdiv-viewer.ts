@@ -17,10 +17,12 @@ import type {
   MeshFacts,
   MeshFormat,
   MeshTags,
+  RenderBuffers,
   SchemeName,
   SizePrediction,
   SubdivideOptions,
 } from '../core/mesh';
+import type { StencilTable } from '../core/stencils';
 import {
   CancelledError,
   type CoreSession,
@@ -133,6 +135,8 @@ export interface ViewerState {
 interface Level {
   data: LevelData;
   graphics: LevelGraphics | null;
+  /** Its stencils, once asked for (stencils()). */
+  stencils?: Promise<StencilTable>;
 }
 
 export class SubdivViewer {
@@ -457,6 +461,28 @@ export class SubdivViewer {
     if (!this.levels[k]) return null;
     if (k === 0) return this.source;
     return this.withHandle(k, (h) => this.core.mesh(h));
+  }
+
+  /**
+   * The stencils of level `k` (default: the shown one; 1 or more): its
+   * vertices as weighted sums of level k − 1's, from the worker, kept with
+   * the level. Null at level 0 or before a load.
+   */
+  async stencils(k = this.current): Promise<StencilTable | null> {
+    const level = this.levels[k];
+    if (k < 1 || !level) return null;
+    level.stencils ??= this.withHandle(k - 1, (h) => this.core.stencils(h, this.stepOptions(k - 1, 1)));
+    try {
+      return await level.stencils;
+    } catch (error) {
+      level.stencils = undefined;
+      throw error;
+    }
+  }
+
+  /** The render buffers of level `k` (null: not computed), as the view draws them. */
+  buffersOf(k: number): RenderBuffers | null {
+    return this.levels[k]?.data.buffers ?? null;
   }
 
   /** The control mesh (level 0). */

@@ -1,14 +1,15 @@
 /**
- * Which control-mesh vertex or edge is under a point of the view: the one
+ * Which vertex or edge of a level is under a point of the view: the one
  * whose picture is nearest the pointer (vertices within a few pixels
- * first, then edges), among those the control mesh's own faces do not
- * hide. Screen-space distances, so a thin edge is as easy to hit when the
- * model is far away as when it is close.
+ * first, then edges), among those the level's own faces do not hide.
+ * Screen-space distances, so a thin edge is as easy to hit when the model
+ * is far away as when it is close. The crease editor picks on the control
+ * mesh, the stencil inspector a vertex of the level shown.
  */
 import { DoubleSide, Mesh, MeshBasicMaterial, type PerspectiveCamera, Raycaster, Vector3 } from 'three';
 import type { LevelGraphics } from './level-graphics';
 
-export type ControlPick = { kind: 'vertex'; vertex: number } | { kind: 'edge'; a: number; b: number };
+export type Pick = { kind: 'vertex'; vertex: number } | { kind: 'edge'; a: number; b: number };
 
 /** How near the pointer (CSS pixels) a vertex or an edge must be drawn to be picked. */
 export const PICK_RADIUS = { vertex: 9, edge: 7 } as const;
@@ -16,21 +17,21 @@ export const PICK_RADIUS = { vertex: 9, edge: 7 } as const;
 const HIT_MATERIAL = new MeshBasicMaterial({ side: DoubleSide });
 
 /**
- * The control element drawn nearest (x, y) (CSS pixels from the view's top
- * left in a view of `width` × `height`), or null when none is within
- * {@link PICK_RADIUS}. `control`: level 0's graphics (its polygon edges and
- * surface).
+ * The vertex or (with `edges`) edge of `level` drawn nearest (x, y) (CSS
+ * pixels from the view's top left in a view of `width` × `height`), or
+ * null when none is within {@link PICK_RADIUS}.
  */
-export function pickControl(
-  control: LevelGraphics,
+export function pickElement(
+  level: LevelGraphics,
   camera: PerspectiveCamera,
   x: number,
   y: number,
   width: number,
   height: number,
-): ControlPick | null {
-  const positions = control.surface.getAttribute('position').array as Float32Array;
-  const edges = control.edges.index?.array ?? new Uint32Array(0);
+  edges: boolean,
+): Pick | null {
+  const positions = level.surface.getAttribute('position').array as Float32Array;
+  const segments = edges ? (level.edges.index?.array ?? new Uint32Array(0)) : new Uint32Array(0);
   const count = positions.length / 3;
   // Each vertex on screen (NaN behind the camera).
   const screen = new Float64Array(2 * count);
@@ -40,7 +41,7 @@ export function pickControl(
     screen[2 * v] = at?.x ?? Number.NaN;
     screen[2 * v + 1] = at?.y ?? Number.NaN;
   }
-  const hidden = occlusion(control, camera);
+  const hidden = occlusion(level, camera);
 
   const vertices: { d: number; v: number }[] = [];
   for (let v = 0; v < count; ++v) {
@@ -51,9 +52,9 @@ export function pickControl(
   for (const { v } of vertices) if (!hidden(p.fromArray(positions, 3 * v))) return { kind: 'vertex', vertex: v };
 
   const candidates: { d: number; a: number; b: number; t: number }[] = [];
-  for (let i = 0; i + 1 < edges.length; i += 2) {
-    const a = edges[i];
-    const b = edges[i + 1];
+  for (let i = 0; i + 1 < segments.length; i += 2) {
+    const a = segments[i];
+    const b = segments[i + 1];
     const ax = screen[2 * a];
     const ay = screen[2 * a + 1];
     const dx = screen[2 * b] - ax;
@@ -73,14 +74,14 @@ export function pickControl(
   return null;
 }
 
-/** A test of whether the control mesh's faces hide a point (on or off the mesh) from `camera`. */
-function occlusion(control: LevelGraphics, camera: PerspectiveCamera): (point: Vector3) => boolean {
-  const mesh = new Mesh(control.surface, HIT_MATERIAL);
+/** A test of whether the level's faces hide a point (on or off the mesh) from `camera`. */
+function occlusion(level: LevelGraphics, camera: PerspectiveCamera): (point: Vector3) => boolean {
+  const mesh = new Mesh(level.surface, HIT_MATERIAL);
   mesh.updateMatrixWorld();
   const raycaster = new Raycaster();
   const origin = camera.getWorldPosition(new Vector3());
   const direction = new Vector3();
-  const radius = control.boundingSphere.radius;
+  const radius = level.boundingSphere.radius;
   return (point) => {
     const distance = direction.subVectors(point, origin).length();
     if (distance === 0) return false;
@@ -93,15 +94,15 @@ function occlusion(control: LevelGraphics, camera: PerspectiveCamera): (point: V
   };
 }
 
-/** Where control vertex `v` is drawn, in CSS pixels from the view's top left (null: behind the camera). */
+/** Where vertex `v` of a level is drawn, in CSS pixels from the view's top left (null: behind the camera). */
 export function screenPointOf(
-  control: LevelGraphics,
+  level: LevelGraphics,
   camera: PerspectiveCamera,
   v: number,
   width: number,
   height: number,
 ): { x: number; y: number } | null {
-  const positions = control.surface.getAttribute('position').array as Float32Array;
+  const positions = level.surface.getAttribute('position').array as Float32Array;
   return onScreen(new Vector3().fromArray(positions, 3 * v), camera, width, height);
 }
 
