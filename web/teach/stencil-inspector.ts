@@ -170,7 +170,9 @@ export class StencilInspector {
     }
     const parents = this.viewer.buffersOf(s.level - 1)?.positions ?? new Float32Array(0);
     const at = new Float32Array(3 * s.parents.length);
-    s.parents.forEach((p, i) => at.set(parents.subarray(3 * p.vertex, 3 * p.vertex + 3), 3 * i));
+    s.parents.forEach((p, i) => {
+      at.set(parents.subarray(3 * p.vertex, 3 * p.vertex + 3), 3 * i);
+    });
     view.setSelection(new Float32Array(0), Float32Array.from(s.position));
     view.setParents(at, s.weightTexts, s.position);
   }
