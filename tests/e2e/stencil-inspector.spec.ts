@@ -21,8 +21,10 @@ test('Catmull-Clark on the cube: a clicked vertex point shows 5/12, 1/6 and 1/36
   await app.open();
   await app.openSample('cube', 'cube.off');
   await app.subdivide();
+  await expect(app.byTestId('stencils.vertex')).toBeHidden();
   await app.page.keyboard.press('w');
   await expect(app.byTestId('stencils.inspect')).toHaveAttribute('aria-pressed', 'true');
+  await expect(app.byTestId('stencils.vertex')).toBeVisible();
   // Vertex 7 of level 1 is the cube's corner (1, 1, 1), facing the camera: valence 3.
   const corner = await shownVertex(app, 7);
   await app.page.mouse.click(corner.x, corner.y);

@@ -11,7 +11,9 @@ import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
 import { CreaseEditor } from '../edit/crease-editor';
 import { nextRenderMode } from '../render/render-mode';
+import { BasisView } from '../teach/basis-view';
 import { StencilInspector } from '../teach/stencil-inspector';
+import { BasisPanel } from '../ui/basis-panel';
 import { ConfirmDialog } from '../ui/confirm-dialog';
 import { CreasePanel } from '../ui/crease-panel';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
@@ -62,6 +64,8 @@ export class AppShell {
   private readonly creasePanel: CreasePanel;
   private readonly inspector: StencilInspector;
   private readonly stencilPanel: StencilPanel;
+  private readonly basis: BasisView;
+  private readonly basisPanel: BasisPanel;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
   private readonly exportActions: ExportActions;
@@ -149,10 +153,18 @@ export class AppShell {
     });
     this.inspector.onChange((state) => this.stencilPanel.update(state));
     this.stencilPanel.update(this.inspector.state);
-    // A click on the view picks for the crease editor or the inspector, whichever is on.
+    this.basis = new BasisView(this.viewer, (error) => this.showError(this.viewer.state.modelName ?? 'mesh', error));
+    this.basisPanel = new BasisPanel({
+      onPicking: (on) => this.setClickMode(on ? 'basis' : null),
+      onVertex: (vertex) => void this.basis.select(vertex),
+    });
+    this.basis.onChange((state) => this.basisPanel.update(state));
+    this.basisPanel.update(this.basis.state);
+    // A click on the view picks for the crease editor, the inspector or the basis view, whichever is on.
     this.viewer.view.onClick = (click) => {
       this.creaseEditor.click(click);
       this.inspector.click(click);
+      this.basis.click(click);
     };
     this.creasePanel = new CreasePanel({
       onEditing: (on) => this.setClickMode(on ? 'creases' : null),
@@ -228,6 +240,7 @@ export class AppShell {
       this.levels.element,
       this.creasePanel.element,
       this.stencilPanel.element,
+      this.basisPanel.element,
       this.display.element,
       shortcutsHelp(),
     );
@@ -391,12 +404,14 @@ export class AppShell {
   }
 
   /** What a click on the view does: pick for the crease editor, for the stencil inspector, or neither. */
-  private setClickMode(mode: 'creases' | 'inspect' | null): void {
+  private setClickMode(mode: 'creases' | 'inspect' | 'basis' | null): void {
     // One at a time: the one going off first, so that its marks go before the other's come.
     if (mode !== 'creases') this.creaseEditor.setEditing(false);
     if (mode !== 'inspect') this.inspector.setInspecting(false);
+    if (mode !== 'basis') this.basis.setPicking(false);
     if (mode === 'creases') this.creaseEditor.setEditing(true);
     if (mode === 'inspect') this.inspector.setInspecting(true);
+    if (mode === 'basis') this.basis.setPicking(true);
   }
 
   /** Names the file's tags that the core reads but does not apply (their lines), or hides such a notice of an earlier file. */

@@ -4,6 +4,7 @@
  * page shows (the page holds handles), imports the core's TS API only
  * (never ./generated/), answers one request at a time and transfers results.
  */
+import { basisFunction } from './basis';
 import type { Mesh, MeshFacts, MeshTags, RenderBuffers } from './mesh';
 import { orientation } from './orientation';
 import {
@@ -156,6 +157,11 @@ const handlers: Handlers = {
     const table = stepStencils(keptLevel(handle).mesh, options);
     const arrays = [table.offsets, table.parents, table.weights, table.kinds, table.elements, table.sizes, table.ends];
     return { value: table, transfer: arrays.map((a) => a.buffer) };
+  },
+  async basis({ handle, vertex, levels, options }) {
+    await init();
+    const values = basisFunction(keptLevel(handle).mesh, vertex, levels, options);
+    return { value: values, transfer: [values.buffer] };
   },
   async predict({ handle, options }) {
     await init();

@@ -8,6 +8,7 @@
  * the worker (a WASM call cannot be interrupted) and goes on with the other
  * sessions' requests.
  */
+import type { StepOptions } from './basis';
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
@@ -304,6 +305,11 @@ export class CoreSession {
   /** The stencils of `subdivide(handle, options)`'s last step (stencils.ts). */
   stencils(handle: LevelHandle, options: SubdivideOptions): Promise<StencilTable> {
     return this.client.request(this, 'stencils', { handle, options });
+  }
+
+  /** Control vertex `vertex`'s basis function at level `levels` of the kept level 0 `handle` (basis.ts). */
+  basis(handle: LevelHandle, vertex: number, levels: number, options: StepOptions): Promise<Float64Array> {
+    return this.client.request(this, 'basis', { handle, vertex, levels, options });
   }
 
   /** Predicted counts and peak bytes of `subdivide(handle, options)`. */

@@ -5,6 +5,7 @@
  * buffers, control edges), transferred, not copied. A step sends a handle
  * and gets the new level back.
  */
+import type { StepOptions } from './basis';
 import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
@@ -52,6 +53,8 @@ export interface WorkerRequests {
   subdivide: { args: { handle: LevelHandle; options: SubdivideOptions }; result: LevelData };
   /** The stencils of a step from a kept level (its result's vertices from the level's), without keeping the result. */
   stencils: { args: { handle: LevelHandle; options: SubdivideOptions }; result: StencilTable };
+  /** A control vertex's basis function at level `levels` (basis.ts), from a kept level 0. */
+  basis: { args: { handle: LevelHandle; vertex: number; levels: number; options: StepOptions }; result: Float64Array };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */

@@ -53,6 +53,16 @@ export function sharpnessColor(sharpness: number): Color {
 
 export const SHARPNESS_COLORS = { weak: '#f59f00', strong: '#e03131', infinite: '#6b0f1a' } as const;
 
+/** Viridis at six stops (0, 0.2, ... 1): dark purple for nothing, yellow for all. */
+export const INFLUENCE_STOPS = ['#440154', '#414487', '#2a788e', '#22a884', '#7ad151', '#fde725'] as const;
+
+/** The colour of a value t in [0, 1] on {@link INFLUENCE_STOPS} (clamped). */
+export function influenceColor(t: number): Color {
+  const x = Math.min(Math.max(Number.isFinite(t) ? t : 0, 0), 1) * (INFLUENCE_STOPS.length - 1);
+  const i = Math.min(Math.floor(x), INFLUENCE_STOPS.length - 2);
+  return new Color(INFLUENCE_STOPS[i]).lerp(new Color(INFLUENCE_STOPS[i + 1]), x - i);
+}
+
 /** The points `vertices` of a level, with the colour of its item's sharpness for each (`per` points an item). */
 function coloredPoints(positions: Float32Array, vertices: ArrayLike<number>, sharpness: ArrayLike<number>, per: 1 | 2) {
   const xyz = new Float32Array(3 * vertices.length);
@@ -143,6 +153,18 @@ export class LevelGraphics {
       this.corners.setAttribute('position', new Float32BufferAttribute(xyz, 3));
       this.corners.setAttribute('color', new Float32BufferAttribute(rgb, 3));
       this.corners.boundingSphere = sphere.clone();
+    }
+  }
+
+  /**
+   * Colours the surface per vertex (`rgb`: r g b in 0..1 per vertex), or
+   * back to its one colour (null); the view draws them with
+   * SceneView.setVertexColors.
+   */
+  setColors(rgb: Float32Array | null): void {
+    for (const geometry of new Set([this.surface, ...this.surfaceParts])) {
+      if (rgb) geometry.setAttribute('color', new BufferAttribute(rgb, 3));
+      else geometry.deleteAttribute('color');
     }
   }
 

@@ -525,6 +525,20 @@ export class SceneView {
     this.dirty = true;
   }
 
+  /**
+   * Draws the surface in its vertices' colours (LevelGraphics.setColors) or
+   * in its one colour.
+   */
+  setVertexColors(on: boolean): void {
+    for (const material of [this.smoothMaterial, this.flatMaterial]) {
+      if (material.vertexColors === on) continue;
+      material.vertexColors = on;
+      material.color.set(on ? '#ffffff' : VIEW_COLORS.surface);
+      material.needsUpdate = true;
+    }
+    this.dirty = true;
+  }
+
   /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */
   edgeSegments(): number {
     const parts = [this.edgeLines, ...this.edgeLines.children.filter((c) => c.visible)] as LineSegments[];

@@ -480,6 +480,29 @@ export class SubdivViewer {
     }
   }
 
+  /**
+   * Control vertex `vertex`'s basis function at level `k` (default: the
+   * shown one): its weight in each of the level's vertices, through every
+   * step (basis.ts). Null before a load.
+   */
+  async basis(vertex: number, k = this.current): Promise<Float64Array | null> {
+    if (!this.levels[k]) return null;
+    const { levels: _levels, startLevel: _start, ...options } = this.stepOptions(0, 1);
+    return this.withHandle(0, (h) => this.core.basis(h, vertex, k, { ...options, renderBuffers: false }));
+  }
+
+  /**
+   * Colours level `k`'s surface per vertex (`rgb`: three numbers in 0..1 a
+   * vertex), or back to its one colour (null). The view shows a level's
+   * colours whenever that level is shown.
+   */
+  setLevelColors(k: number, rgb: Float32Array | null): void {
+    const level = this.levels[k];
+    if (!level) return;
+    this.graphicsOf(level).setColors(rgb);
+    if (k === this.current) this.view.setVertexColors(rgb !== null);
+  }
+
   /** The render buffers of level `k` (null: not computed), as the view draws them. */
   buffersOf(k: number): RenderBuffers | null {
     return this.levels[k]?.data.buffers ?? null;
@@ -655,7 +678,9 @@ export class SubdivViewer {
 
   private show(): void {
     const level = this.levels[this.current];
-    this.view.setLevel(this.graphicsOf(level));
+    const graphics = this.graphicsOf(level);
+    this.view.setLevel(graphics);
+    this.view.setVertexColors(graphics.surface.hasAttribute('color'));
     this.view.setControlMesh(this.graphicsOf(this.levels[0]));
     this.view.setBoundingBox(level.data.facts.bboxMin, level.data.facts.bboxMax);
     this.emit();

@@ -1,0 +1,87 @@
+/**
+ * Basis function panel: switches the view on, takes a control vertex's
+ * number from the keyboard, and shows the colour bar of its influence with
+ * the largest weight and how many of the level's vertices it reaches.
+ */
+import { INFLUENCE_STOPS } from '../render/level-graphics';
+import type { BasisState } from '../teach/basis-view';
+import { button, el, section, uniqueId } from './dom';
+
+export interface BasisPanelHandlers {
+  onPicking: (on: boolean) => void;
+  onVertex: (vertex: number) => void;
+}
+
+export class BasisPanel {
+  readonly element: HTMLElement;
+  private readonly toggle: HTMLButtonElement;
+  private readonly message: HTMLElement;
+  private readonly row: HTMLElement;
+  private readonly vertex: HTMLInputElement;
+  private readonly legend: HTMLElement;
+  private readonly low: HTMLElement;
+  private readonly high: HTMLElement;
+  private readonly reach: HTMLElement;
+  private picking = false;
+
+  constructor(handlers: BasisPanelHandlers) {
+    this.toggle = button(
+      'Basis function',
+      'basis.toggle',
+      () => handlers.onPicking(!this.picking),
+      "Colour the surface by a control vertex's influence",
+    );
+    this.message = el('p', { testId: 'basis.message', className: 'hint' });
+    const vertexId = uniqueId('basis-vertex');
+    this.vertex = el('input', {
+      testId: 'basis.vertex',
+      attrs: { id: vertexId, type: 'number', min: '0', step: '1', inputmode: 'numeric' },
+    });
+    this.vertex.addEventListener('change', () => {
+      const v = Number(this.vertex.value);
+      if (this.vertex.value !== '' && Number.isInteger(v)) handlers.onVertex(v);
+    });
+    this.row = el(
+      'div',
+      { className: 'row' },
+      el('label', { attrs: { for: vertexId }, text: 'Control vertex' }),
+      this.vertex,
+    );
+    this.low = el('span', { testId: 'basis.low' });
+    this.high = el('span', { testId: 'basis.high' });
+    const bar = el('div', {
+      className: 'colour-bar',
+      attrs: { role: 'img', 'aria-label': 'colour bar: no influence (dark) to the largest (yellow)' },
+    });
+    bar.style.background = `linear-gradient(to right, ${INFLUENCE_STOPS.join(', ')})`;
+    this.reach = el('p', { testId: 'basis.reach' });
+    this.legend = el(
+      'div',
+      { testId: 'basis.legend' },
+      bar,
+      el('div', { className: 'row colour-bar-labels' }, this.low, this.high),
+      this.reach,
+    );
+    this.element = section('Basis function', 'basis-panel', this.toggle, this.message, this.row, this.legend);
+  }
+
+  update(state: BasisState): void {
+    this.picking = state.picking;
+    this.toggle.disabled = !state.available;
+    this.toggle.setAttribute('aria-pressed', String(state.picking));
+    this.toggle.textContent = state.picking ? 'Done with the basis function' : 'Basis function';
+    this.message.textContent = state.message;
+    this.message.hidden = state.message === '';
+    this.row.hidden = !state.picking;
+    this.vertex.max = String(Math.max(0, state.controlVertices - 1));
+    const shown = state.shown;
+    this.legend.hidden = !shown;
+    if (!shown) return;
+    if (document.activeElement !== this.vertex) this.vertex.value = String(shown.vertex);
+    this.low.textContent = shown.min < 0 ? shown.min.toFixed(4) : '0';
+    this.high.textContent = shown.max.toFixed(4);
+    this.reach.textContent =
+      `Control vertex ${shown.vertex} reaches ${shown.reached} of the ${shown.count} vertices of level ${shown.level}` +
+      ` (largest weight ${shown.max.toFixed(4)}).`;
+  }
+}
