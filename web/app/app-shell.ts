@@ -12,6 +12,7 @@ import { CancelledError } from '../core/worker-client';
 import { CreaseEditor } from '../edit/crease-editor';
 import { nextRenderMode } from '../render/render-mode';
 import { BasisView } from '../teach/basis-view';
+import { SplitSmooth } from '../teach/split-smooth';
 import { StencilInspector } from '../teach/stencil-inspector';
 import { BasisPanel } from '../ui/basis-panel';
 import { ConfirmDialog } from '../ui/confirm-dialog';
@@ -31,6 +32,7 @@ import { RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { SharePanel } from '../ui/share-panel';
 import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
+import { SplitPanel } from '../ui/split-panel';
 import { StencilPanel } from '../ui/stencil-panel';
 import { handleViewKey } from '../ui/view-keys';
 import { messageOf } from '../viewer/error-message';
@@ -66,6 +68,8 @@ export class AppShell {
   private readonly stencilPanel: StencilPanel;
   private readonly basis: BasisView;
   private readonly basisPanel: BasisPanel;
+  private readonly split: SplitSmooth;
+  private readonly splitPanel: SplitPanel;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
   private readonly exportActions: ExportActions;
@@ -160,6 +164,13 @@ export class AppShell {
     });
     this.basis.onChange((state) => this.basisPanel.update(state));
     this.basisPanel.update(this.basis.state);
+    this.split = new SplitSmooth(this.viewer, (error) => this.showError(this.viewer.state.modelName ?? 'mesh', error));
+    this.splitPanel = new SplitPanel({
+      onT: (t) => void this.split.setT(t),
+      onAnimate: () => this.split.animate(),
+    });
+    this.split.onChange((state) => this.splitPanel.update(state));
+    this.splitPanel.update(this.split.state);
     // A click on the view picks for the crease editor, the inspector or the basis view, whichever is on.
     this.viewer.view.onClick = (click) => {
       this.creaseEditor.click(click);
@@ -241,6 +252,7 @@ export class AppShell {
       this.creasePanel.element,
       this.stencilPanel.element,
       this.basisPanel.element,
+      this.splitPanel.element,
       this.display.element,
       shortcutsHelp(),
     );
@@ -333,6 +345,7 @@ export class AppShell {
         return 'link' in result ? result.link : null;
       },
       positions: async () => Array.from((await this.viewer.meshOf())?.positions ?? []),
+      drawnPositions: () => Array.from(this.viewer.buffersOf(this.viewer.state.level)?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
       vertexOnScreen: (v, shown) => {
         const at = this.viewer.view.vertexOnScreen(v, shown);

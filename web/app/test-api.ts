@@ -56,6 +56,8 @@ export interface SubdivLabTestApi {
   setMemoryBudget(bytes: number): void;
   /** Vertex positions of the shown level, x0 y0 z0 x1 ... (empty before a load). */
   positions(): Promise<number[]>;
+  /** The shown level's points as drawn (float32; between split and smoothed while Split, then smooth is used). */
+  drawnPositions(): number[];
   /** The link Share would copy; null when there is none (a local file, no model). */
   shareLink(): string | null;
   /**

@@ -15,6 +15,7 @@ import {
   predictSize,
   schemeNames,
   stepStencils,
+  subdivide,
   subdivideForView,
   viewMesh,
 } from './subdiv-core';
@@ -162,6 +163,11 @@ const handlers: Handlers = {
     await init();
     const values = basisFunction(keptLevel(handle).mesh, vertex, levels, options);
     return { value: values, transfer: [values.buffer] };
+  },
+  async points({ handle, options }) {
+    await init();
+    const points = Float32Array.from(subdivide(keptLevel(handle).mesh, options).positions);
+    return { value: points, transfer: [points.buffer] };
   },
   async predict({ handle, options }) {
     await init();

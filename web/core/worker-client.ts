@@ -312,6 +312,11 @@ export class CoreSession {
     return this.client.request(this, 'basis', { handle, vertex, levels, options });
   }
 
+  /** The points of `subdivide(handle, options)` as float32, without keeping the result. */
+  points(handle: LevelHandle, options: SubdivideOptions): Promise<Float32Array> {
+    return this.client.request(this, 'points', { handle, options });
+  }
+
   /** Predicted counts and peak bytes of `subdivide(handle, options)`. */
   predictSize(handle: LevelHandle, options: SubdivideOptions): Promise<SizePrediction> {
     return this.client.request(this, 'predict', { handle, options });

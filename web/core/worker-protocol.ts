@@ -55,6 +55,8 @@ export interface WorkerRequests {
   stencils: { args: { handle: LevelHandle; options: SubdivideOptions }; result: StencilTable };
   /** A control vertex's basis function at level `levels` (basis.ts), from a kept level 0. */
   basis: { args: { handle: LevelHandle; vertex: number; levels: number; options: StepOptions }; result: Float64Array };
+  /** The points of a step from a kept level (float32, as drawn), without keeping the result. */
+  points: { args: { handle: LevelHandle; options: SubdivideOptions }; result: Float32Array };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */

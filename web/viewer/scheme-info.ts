@@ -60,3 +60,15 @@ export function hostLabel(host: RuleHost): string {
 export function hostNeedsTriangles(host: RuleHost): boolean {
   return hostInfo(host)?.needsTriangles === true;
 }
+
+/**
+ * The linear scheme on the same host as `scheme` (with `host`, the rule
+ * set's for custom): its step is the split alone, numbered as the scheme's
+ * own step. Null for the hosts without one (DQQ, √3, PQT).
+ */
+export function linearTwin(scheme: SchemeName | string, host?: RuleHost): 'linear' | 'linear-tri' | null {
+  const on = scheme === 'custom' ? host : SCHEME_TABLE.schemes.find((s) => s.name === scheme)?.host;
+  if (on === 'pqq') return 'linear';
+  if (on === 'ptq') return 'linear-tri';
+  return null;
+}

@@ -10,6 +10,8 @@
  * with SubdivError / CancelledError / Error; the viewer never touches the
  * DOM outside its container, so an app shell or an embed adds the panels.
  */
+
+import type { BufferAttribute } from 'three';
 import type {
   BoundaryInterpolation,
   CreaseMethod,
@@ -22,6 +24,7 @@ import type {
   SizePrediction,
   SubdivideOptions,
 } from '../core/mesh';
+import type { RuleHost } from '../core/rule-set';
 import type { StencilTable } from '../core/stencils';
 import {
   CancelledError,
@@ -39,6 +42,7 @@ import { SceneView } from '../render/scene-view';
 import { exportSvg } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
+import { linearTwin } from './scheme-info';
 
 /**
  * Options of a step other than the scheme, the level and triangulation:
@@ -141,6 +145,8 @@ interface Level {
 
 export class SubdivViewer {
   readonly view: SceneView;
+  /** A level drawn between its split and its own points (setSplitBlend), with its own points. */
+  private blend: { level: Level; own: Float32Array; normals: Float32Array } | null = null;
   /** This viewer's requests to the page's core. */
   readonly core: CoreSession;
   private levels: Level[] = [];
@@ -503,9 +509,75 @@ export class SubdivViewer {
     if (k === this.current) this.view.setVertexColors(rgb !== null);
   }
 
+  /**
+   * The points of the shown level k ≥ 1 as the split alone puts them: the
+   * linear scheme on the same host, one step from level k − 1 (the same
+   * numbering). Null at level 0 and for schemes without a linear twin
+   * (linearTwin).
+   */
+  async splitPoints(): Promise<Float32Array | null> {
+    const k = this.current;
+    const twin = linearTwin(this.scheme, this.schemeRulesHost());
+    if (k < 1 || !twin || !this.levels[k]) return null;
+    const { rules: _rules, ...options } = this.stepOptions(k - 1, 1);
+    return this.withHandle(k - 1, (h) => this.core.points(h, { ...options, scheme: twin, renderBuffers: false }));
+  }
+
+  /**
+   * Draws the shown level's points at `t` of the way from `split` (its
+   * split alone, splitPoints) to its own (t = 1); the edges and the
+   * surface follow. Another level, or t = 1, draws the level's own points
+   * again.
+   */
+  setSplitBlend(split: Float32Array, t: number): void {
+    const level = this.levels[this.current];
+    if (!level) return;
+    const surface = this.graphicsOf(level).surface;
+    const position = surface.getAttribute('position') as BufferAttribute;
+    const normal = surface.getAttribute('normal') as BufferAttribute;
+    const drawn = position.array as Float32Array;
+    if (split.length !== drawn.length) return;
+    if (this.blend?.level !== level) {
+      this.endSplitBlend();
+      this.blend = { level, own: Float32Array.from(drawn), normals: Float32Array.from(normal.array) };
+    }
+    const own = this.blend.own;
+    for (let i = 0; i < drawn.length; ++i) drawn[i] = split[i] + t * (own[i] - split[i]);
+    position.needsUpdate = true;
+    // Shaded as the blended surface is (three's normals of the drawn triangles), not as the smoothed one.
+    surface.computeVertexNormals();
+    this.view.requestRender();
+    if (t === 1) this.endSplitBlend();
+  }
+
+  /** Puts the blended level's own points back. */
+  private endSplitBlend(): void {
+    if (!this.blend) return;
+    const { level, own, normals } = this.blend;
+    this.blend = null;
+    if (!level.graphics) return;
+    const position = level.graphics.surface.getAttribute('position') as BufferAttribute;
+    const normal = level.graphics.surface.getAttribute('normal') as BufferAttribute;
+    (position.array as Float32Array).set(own);
+    (normal.array as Float32Array).set(normals);
+    position.needsUpdate = true;
+    normal.needsUpdate = true;
+    this.view.requestRender();
+  }
+
   /** The render buffers of level `k` (null: not computed), as the view draws them. */
   buffersOf(k: number): RenderBuffers | null {
     return this.levels[k]?.data.buffers ?? null;
+  }
+
+  /** Changes whenever the levels are dropped or replaced (a load, a reset, a scheme or tag change, a cancel). */
+  get generationKey(): number {
+    return this.generation;
+  }
+
+  /** The host of the custom scheme's rule set (undefined without one). */
+  schemeRulesHost(): RuleHost | undefined {
+    return this.schemeOptions.rules?.host;
   }
 
   /** The control mesh (level 0). */
@@ -677,6 +749,7 @@ export class SubdivViewer {
   }
 
   private show(): void {
+    this.endSplitBlend();
     const level = this.levels[this.current];
     const graphics = this.graphicsOf(level);
     this.view.setLevel(graphics);
