@@ -27,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/compare.h"
 #include "core/level_view.h"
 #include "core/mesh_facts.h"
 #include "core/mesh_io.h"
@@ -530,6 +531,40 @@ val js_step_stencils(const val& mesh, const val& js_options) {
   });
 }
 
+/// compare_meshes (compare.h): the verdict, its reasons and the errors.
+val js_compare_meshes(const val& reference, const val& candidate,
+                      double relative_tolerance) {
+  return guarded([&] {
+    const Mesh_comparison c = compare_meshes(
+        from_js_mesh(reference), from_js_mesh(candidate), relative_tolerance);
+    val reasons = val::array();
+    for (const std::string& r : c.reasons) reasons.call<void>("push", r);
+    val worst = val::array();
+    for (const Vertex_error& e : c.worst) {
+      val o = val::object();
+      o.set("vertex", e.vertex);
+      o.set("reference", e.reference);
+      o.set("error", e.error);
+      worst.call<void>("push", o);
+    }
+    val out = ok_object();
+    out.set("match", c.match);
+    out.set("reasons", reasons);
+    out.set("referenceVertices", static_cast<double>(c.vertices[0]));
+    out.set("resultVertices", static_cast<double>(c.vertices[1]));
+    out.set("referenceFaces", static_cast<double>(c.faces[0]));
+    out.set("resultFaces", static_cast<double>(c.faces[1]));
+    out.set("matching", c.matching);
+    out.set("sameFaces", c.same_faces);
+    out.set("tolerance", c.tolerance);
+    out.set("diagonal", c.diagonal);
+    out.set("maxError", c.max_error);
+    out.set("meanError", c.mean_error);
+    out.set("worst", worst);
+    return out;
+  });
+}
+
 val js_predict_size(const val& mesh, const val& js_options) {
   return guarded([&] {
     const Mesh_buffers in = from_js_mesh(mesh);
@@ -791,6 +826,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("subdivide", &subdivlab::js_subdivide);
   emscripten::function("predict_size", &subdivlab::js_predict_size);
   emscripten::function("step_stencils", &subdivlab::js_step_stencils);
+  emscripten::function("compare_meshes", &subdivlab::js_compare_meshes);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

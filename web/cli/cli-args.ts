@@ -6,6 +6,7 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
               [--rule RULES.json] [--fixed-boundary] [--crease-method M] [--boundary B]
        subdiv info INPUT
        subdiv stencil INPUT --level K --vertex I [--scheme S] [--triangulate] [--rule RULES.json] ...
+       subdiv check CONTROL RESULT [--scheme S] [--levels K] [--tolerance T] [--triangulate] ...
 
   INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
   --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
@@ -34,13 +35,20 @@ as "subdiv INPUT --levels K -o OUT" numbers it) is made from the vertices of lev
 degree, the scheme's formula, and each parent with its weight (as a fraction where exact).
 It takes the subdividing options above but -o, --stats and --levels.
 
+subdiv check CONTROL RESULT says whether RESULT (yours, from any program) is level K of
+CONTROL under the scheme: same counts, the same faces, every vertex within --tolerance T
+(a share of the bounding-box diagonal, default 1e-6). Vertices are matched in order where
+that fits, else each to the nearest reference vertex. It prints the verdict, the reasons,
+the largest and mean errors and the worst vertices (by their number in RESULT) as JSON, and
+exits 0 on a match, 1 on a mismatch. It takes the subdividing options but -o and --stats.
+
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
 
 /** A command line that made sense. */
 export interface CliArgs {
-  /** `subdiv info INPUT`, `subdiv stencil INPUT ...` or the default, subdividing. */
-  command: 'subdivide' | 'info' | 'stencil';
+  /** `subdiv info INPUT`, `subdiv stencil INPUT ...`, `subdiv check CONTROL RESULT` or the default, subdividing. */
+  command: 'subdivide' | 'info' | 'stencil' | 'check';
   input: string;
   scheme: string;
   levels: number;
@@ -57,6 +65,9 @@ export interface CliArgs {
   stats: boolean;
   /** stencil: --vertex (levels holds --level). */
   vertex: number;
+  /** check: the result to check (input is the control mesh), and --tolerance. */
+  result: string;
+  tolerance: number;
   help: boolean;
 }
 
@@ -74,6 +85,9 @@ function outputFormat(path: string): MeshFormat {
   return match[1].toLowerCase() as MeshFormat;
 }
 
+/** subdiv check's tolerance: a share of the reference's bounding-box diagonal. */
+export const DEFAULT_TOLERANCE = 1e-6;
+
 /** The options of a command line that gives none (help, info). */
 const NO_OPTIONS = {
   levels: 0,
@@ -85,6 +99,8 @@ const NO_OPTIONS = {
   output: null,
   stats: false,
   vertex: 0,
+  result: '',
+  tolerance: DEFAULT_TOLERANCE,
 } as const satisfies Partial<CliArgs>;
 
 /** Parses argv (without node and the script). Throws UsageError; scheme names are checked later. */
@@ -100,15 +116,28 @@ export function parseCliArgs(argv: string[]): CliArgs {
   if (help) return { ...NO_OPTIONS, command: 'subdivide', input: '', scheme: '', help };
   if (positionals[0] === 'info') return infoArgs(parsed);
   const stencil = positionals[0] === 'stencil';
-  const inputs = stencil ? positionals.slice(1) : positionals;
-  if (inputs.length !== 1) {
+  const check = positionals[0] === 'check';
+  const inputs = stencil || check ? positionals.slice(1) : positionals;
+  if (check && inputs.length !== 2) throw new UsageError('subdiv check takes two files: CONTROL RESULT');
+  if (!check && inputs.length !== 1) {
     throw new UsageError(inputs.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
   }
-  const only = stencil ? (['output', 'stats', 'levels'] as const) : (['level', 'vertex'] as const);
-  for (const name of only) {
+  const command = stencil ? 'stencil' : check ? 'check' : 'subdivide';
+  const refused = {
+    stencil: ['output', 'stats', 'levels', 'tolerance'],
+    check: ['output', 'stats', 'level', 'vertex'],
+    subdivide: ['level', 'vertex', 'tolerance'],
+  } as const;
+  for (const name of refused[command]) {
     if (values[name] !== undefined) {
-      throw new UsageError(stencil ? `subdiv stencil takes no --${name}` : `--${name} is subdiv stencil's`);
+      throw new UsageError(
+        command === 'subdivide' ? `--${name} belongs to another command` : `subdiv ${command} takes no --${name}`,
+      );
     }
+  }
+  const tolerance = values.tolerance === undefined ? DEFAULT_TOLERANCE : Number(values.tolerance);
+  if (!(tolerance >= 0) || !Number.isFinite(tolerance)) {
+    throw new UsageError(`--tolerance must be a number 0 or more, not "${values.tolerance}"`);
   }
   const creaseMethod = values['crease-method'] ?? null;
   if (creaseMethod !== null && !CREASE_METHODS.includes(creaseMethod as CreaseMethod)) {
@@ -127,8 +156,10 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const scheme = values.scheme ?? (rule !== null ? 'custom' : 'catmull-clark');
   if (scheme === 'custom' && rule === null) throw new UsageError('--scheme custom needs --rule FILE.json');
   return {
-    command: stencil ? 'stencil' : 'subdivide',
+    command,
     input: inputs[0],
+    result: check ? inputs[1] : '',
+    tolerance,
     scheme,
     levels,
     triangulate: values.triangulate === true,
@@ -173,6 +204,7 @@ function parse(argv: string[]) {
       levels: { type: 'string' },
       level: { type: 'string' },
       vertex: { type: 'string' },
+      tolerance: { type: 'string' },
       triangulate: { type: 'boolean' },
       rule: { type: 'string' },
       'fixed-boundary': { type: 'boolean' },

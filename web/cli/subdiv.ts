@@ -10,6 +10,7 @@ import type { Mesh, MeshFacts, MeshFormat, SchemeName, SubdivideOptions } from '
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
 import { fraction, vertexStencil } from '../core/stencils';
 import {
+  compareMeshes,
   formatFromFileName,
   hostOf,
   meshFacts,
@@ -187,6 +188,55 @@ async function stencil(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Pr
   }
 }
 
+/** Thrown by `subdiv check` on a mismatch, after its report: exit status 1 without an error line. */
+class Mismatch extends Error {}
+
+/**
+ * `subdiv check CONTROL RESULT`: RESULT against the core's level of CONTROL,
+ * as JSON; a mismatch ends with exit status 1.
+ */
+async function check(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
+  const controlText = readInput(args.input);
+  const resultText = readInput(args.result);
+  let reference: Mesh;
+  try {
+    reference = subdivide(parseMesh(controlText, inputFormat(args.input, controlText)), subdivideOptions(args, rules));
+  } catch (error) {
+    throw inputError(args, error);
+  }
+  let result: Mesh;
+  try {
+    result = parseMesh(resultText, inputFormat(args.result, resultText));
+  } catch (error) {
+    if (error instanceof SubdivError) throw new InputError(locate(args.result, error));
+    throw error;
+  }
+  const c = compareMeshes(reference, result, args.tolerance);
+  const at = (mesh: Mesh, v: number) => Array.from(mesh.positions.subarray(3 * v, 3 * v + 3));
+  const report = {
+    verdict: c.match ? 'match' : 'mismatch',
+    scheme: args.scheme,
+    levels: args.levels,
+    reasons: c.reasons,
+    reference: { vertices: c.referenceVertices, faces: c.referenceFaces },
+    result: { vertices: c.resultVertices, faces: c.resultFaces },
+    matching: c.matching,
+    sameFaces: c.sameFaces,
+    relativeTolerance: args.tolerance,
+    tolerance: c.tolerance,
+    maxError: c.maxError,
+    meanError: c.meanError,
+    worst: c.worst.map((w) => ({
+      vertex: w.vertex,
+      error: w.error,
+      expected: at(reference, w.reference),
+      got: at(result, w.vertex),
+    })),
+  };
+  io.stdout(`${JSON.stringify(report, null, 2)}\n`);
+  if (!c.match) throw new Mismatch();
+}
+
 async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'info') return info(args, io);
   await initNode();
@@ -196,6 +246,7 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   }
   const rules = readRules(args);
   if (args.command === 'stencil') return stencil(args, io, rules);
+  if (args.command === 'check') return check(args, io, rules);
   const text = readInput(args.input);
   let result: Mesh;
   let ms: number;
@@ -265,6 +316,7 @@ export async function main(argv: string[], io: CliIo = processIo): Promise<numbe
       io.stderr(`error: ${error.message}\n`);
       return 1;
     }
+    if (error instanceof Mismatch) return 1;
     const message = error instanceof Error ? error.message : String(error);
     io.stderr(`error: ${message.split('\n')[0]}\n`);
     return 1;

@@ -6,6 +6,8 @@
  * message and line. Nothing else in the project imports the module's glue
  * in ./generated/ (scheme-table.ts reads the table set-up writes beside it).
  */
+
+import type { MeshComparison } from './compare';
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
@@ -40,6 +42,7 @@ interface CoreModule {
   subdivide(mesh: Mesh, options: CoreOptions): RawResult<{ mesh: Mesh }>;
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   step_stencils(mesh: Mesh, options: CoreOptions): RawResult<StencilTable>;
+  compare_meshes(reference: Mesh, result: Mesh, relativeTolerance: number): RawResult<MeshComparison>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -249,6 +252,21 @@ export function stepStencils(mesh: Mesh, options: SubdivideOptions): StencilTabl
     ok: true;
   };
   return table;
+}
+
+/**
+ * Checks `result` (a student's level, say) against `reference` (the core's):
+ * counts, the faces through a vertex matching (in order where it fits,
+ * else nearest points), and each vertex's distance; `relativeTolerance` is
+ * a share of the reference's bounding-box diagonal.
+ */
+export function compareMeshes(reference: Mesh, result: Mesh, relativeTolerance: number): MeshComparison {
+  const { ok: _ok, ...comparison } = unwrap(
+    module().compare_meshes(reference, result, relativeTolerance),
+  ) as MeshComparison & {
+    ok: true;
+  };
+  return comparison;
 }
 
 /** Counts and peak heap bytes predicted for `subdivide(mesh, options)`, without subdividing. */

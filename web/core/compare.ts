@@ -1,0 +1,24 @@
+/**
+ * A result checked against the reference (wasm/src/core/compare.h), as
+ * compareMeshes (subdiv-core.ts) gives it.
+ */
+export interface MeshComparison {
+  /** Same counts, the same faces through the vertex matching, every vertex within the tolerance. */
+  match: boolean;
+  /** What failed, one sentence each. */
+  reasons: string[];
+  referenceVertices: number;
+  resultVertices: number;
+  referenceFaces: number;
+  resultFaces: number;
+  /** 'order': vertex i is the reference's vertex i; 'nearest': each the reference vertex nearest it. */
+  matching: 'order' | 'nearest';
+  sameFaces: boolean;
+  /** The absolute tolerance: the relative one times the reference's bounding-box diagonal. */
+  tolerance: number;
+  diagonal: number;
+  maxError: number;
+  meanError: number;
+  /** The worst vertices (the result's numbers), largest error first, with the reference vertex each was matched to. */
+  worst: { vertex: number; reference: number; error: number }[];
+}
