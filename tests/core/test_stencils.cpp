@@ -234,9 +234,13 @@ TEST(Stencils, FollowTheCreaseRules) {
   EXPECT_EQ(r[0], std::make_pair(4u, 0.125));
   EXPECT_EQ(r[1], std::make_pair(5u, 0.75));
   EXPECT_EQ(r[2], std::make_pair(7u, 0.125));
+  EXPECT_EQ(t.value.origins[5].kind, Stencil_kind::crease_vertex);
+  EXPECT_EQ(t.value.origins[0].kind, Stencil_kind::vertex_point);
   for (std::uint32_t v = 8; v < 20; ++v) {
     const Stencil_origin& o = t.value.origins[v];
     const bool sharp = o.ends[0] >= 4 && o.ends[1] >= 4;
+    EXPECT_EQ(o.kind, sharp ? Stencil_kind::sharp_edge_point
+                            : Stencil_kind::edge_point);
     if (sharp) EXPECT_EQ(row(t.value, v).size(), 2u) << "edge point " << v;
   }
   expect_stencils_give_points_of(m, options_of("catmull-clark", 1));

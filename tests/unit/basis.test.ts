@@ -63,6 +63,25 @@ describe('basisFunction', () => {
     expect(reached('torus-tri.off', 'loop')).toBe(1 + 6 * 21);
   });
 
+  it('triangulating first (Loop on the cube) is done on the real points: still a partition of unity', () => {
+    const mesh = loadFixture('cube.off');
+    const options = { scheme: 'loop' as SchemeName, triangulate: true };
+    const level2 = subdivide(subdivide(mesh, { ...options, levels: 1 }), { ...options, levels: 1, startLevel: 1 });
+    const sum = new Float64Array(level2.positions.length / 3);
+    const point = new Float64Array(level2.positions.length);
+    for (let i = 0; i < 8; ++i) {
+      const b = basisFunction(mesh, i, 2, options);
+      for (let v = 0; v < sum.length; ++v) {
+        sum[v] += b[v];
+        for (let c = 0; c < 3; ++c) point[3 * v + c] += b[v] * mesh.positions[3 * i + c];
+      }
+    }
+    for (let v = 0; v < sum.length; ++v) {
+      expect(sum[v]).toBeCloseTo(1, 12);
+      for (let c = 0; c < 3; ++c) expect(point[3 * v + c]).toBeCloseTo(level2.positions[3 * v + c], 12);
+    }
+  });
+
   it('refuses a vertex that is not a control vertex', () => {
     expect(() => basisFunction(loadFixture('cube.off'), 8, 1, { scheme: 'catmull-clark' })).toThrow(
       'vertex 8 is not a control vertex (0 to 7)',

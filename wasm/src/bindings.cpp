@@ -511,7 +511,7 @@ val js_step_stencils(const val& mesh, const val& js_options) {
       ends.insert(ends.end(), {o.ends[0], o.ends[1]});
     }
     val names = val::array();
-    for (int k = 0; k <= static_cast<int>(Stencil_kind::border_point); ++k)
+    for (int k = 0; k < kStencilKinds; ++k)
       names.call<void>(
           "push", std::string(stencil_kind_name(static_cast<Stencil_kind>(k))));
     val formulas = val::object();

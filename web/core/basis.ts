@@ -1,14 +1,15 @@
 /**
  * A control vertex's basis function at a refined level: its weight in every
- * refined vertex through all steps. Every scheme's points are linear in the
- * control points, coordinate by coordinate, so the steps run on the control
- * mesh with x replaced by 1 at that vertex and 0 elsewhere give the basis
- * function as the result's x (y and z stay the real ones, so the mesh keeps
- * its shape for the core's checks). The steps are the viewer's: one at a
- * time, so the values are numbered as its levels are.
+ * refined vertex through all steps. The first step's weights are its
+ * stencils (stencils.ts; a triangulation that step makes is made on the
+ * real points). Every scheme's points are linear in the points they start
+ * from, coordinate by coordinate, so the later steps run on level 1 with x
+ * replaced by those weights give the basis function as the result's x (y
+ * and z stay the real ones). The steps are the viewer's: one at a time, so
+ * the values are numbered as its levels are.
  */
 import type { Mesh, SubdivideOptions } from './mesh';
-import { subdivide } from './subdiv-core';
+import { stepStencils, subdivide } from './subdiv-core';
 
 /** The step options of a level: `options` with levels 1 and its start level. */
 export type StepOptions = Omit<SubdivideOptions, 'levels' | 'startLevel'>;
@@ -22,10 +23,18 @@ export function basisFunction(mesh: Mesh, vertex: number, levels: number, option
   if (!Number.isInteger(vertex) || vertex < 0 || vertex >= count) {
     throw new RangeError(`vertex ${vertex} is not a control vertex (0 to ${count - 1})`);
   }
-  const positions = Float64Array.from(mesh.positions);
-  for (let v = 0; v < count; ++v) positions[3 * v] = v === vertex ? 1 : 0;
-  let level: Mesh = { ...mesh, positions };
-  for (let k = 0; k < levels; ++k) level = subdivide(level, { ...options, levels: 1, startLevel: k });
+  if (levels === 0) return Float64Array.from({ length: count }, (_, v) => (v === vertex ? 1 : 0));
+  const first = { ...options, levels: 1, startLevel: 0 };
+  const table = stepStencils(mesh, first);
+  const level1 = subdivide(mesh, first);
+  const positions = Float64Array.from(level1.positions);
+  for (let c = 0; c < table.kinds.length; ++c) {
+    positions[3 * c] = 0;
+    for (let i = table.offsets[c]; i < table.offsets[c + 1]; ++i)
+      if (table.parents[i] === vertex) positions[3 * c] = table.weights[i];
+  }
+  let level: Mesh = { ...level1, positions };
+  for (let k = 1; k < levels; ++k) level = subdivide(level, { ...options, levels: 1, startLevel: k });
   const values = new Float64Array(level.positions.length / 3);
   for (let v = 0; v < values.length; ++v) values[v] = level.positions[3 * v];
   return values;

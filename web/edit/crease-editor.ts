@@ -39,6 +39,8 @@ export class CreaseEditor {
    */
   private faces: Uint32Array | null = null;
   private readonly listeners = new Set<(state: CreaseEditorState) => void>();
+  /** The last edit asked for (each waits for the one before). */
+  private edits: Promise<unknown> = Promise.resolve();
 
   /** `onError` hears of an edit the viewer could not compute (the previous levels stay). */
   constructor(
@@ -100,17 +102,21 @@ export class CreaseEditor {
 
   /**
    * Sets the selection's sharpness (0 smooth, 10 and more infinitely
-   * sharp) and computes the levels again. Resolves false when nothing is
-   * selected or nothing changes.
+   * sharp) and computes the levels again. Edits run one after another, each
+   * on the tags the one before left, so that quick edits all count.
+   * Resolves false when nothing is selected or nothing changes.
    */
-  async setSharpness(sharpness: number): Promise<boolean> {
-    const mesh = this.viewer.controlMesh;
-    if (!this.target || !mesh) return false;
-    const now = sharpnessOf(mesh.tags, this.target);
-    const next = withSharpness(mesh.tags, this.target, sharpness);
-    if (!now.mixed && sharpnessOf(next, this.target).sharpness === now.sharpness) return false;
-    if (await this.apply(next)) this.history.push(mesh.tags);
-    return true;
+  setSharpness(sharpness: number): Promise<boolean> {
+    const target = this.target;
+    return this.queued(async () => {
+      const mesh = this.viewer.controlMesh;
+      if (!target || !mesh) return false;
+      const now = sharpnessOf(mesh.tags, target);
+      const next = withSharpness(mesh.tags, target, sharpness);
+      if (!now.mixed && sharpnessOf(next, target).sharpness === now.sharpness) return false;
+      if (await this.apply(next)) this.history.push(mesh.tags);
+      return true;
+    });
   }
 
   /** Goes back one edit; false when there is none. */
@@ -124,16 +130,23 @@ export class CreaseEditor {
   }
 
   private travel(kind: 'undo' | 'redo'): boolean {
-    const mesh = this.viewer.controlMesh;
-    const step = kind === 'undo' ? this.history.undoTarget() : this.history.redoTarget();
-    if (!mesh || !step) return false;
-    void this.apply(step.tags).then((applied) => {
-      if (!applied) return;
+    if (!(kind === 'undo' ? this.history.canUndo : this.history.canRedo)) return false;
+    void this.queued(async () => {
+      const mesh = this.viewer.controlMesh;
+      const step = kind === 'undo' ? this.history.undoTarget() : this.history.redoTarget();
+      if (!mesh || !step || !(await this.apply(step.tags))) return;
       if (kind === 'undo') this.history.undone(mesh.tags);
       else this.history.redone(mesh.tags);
       this.emit();
     });
     return true;
+  }
+
+  /** Runs `edit` after the edits asked for before it. */
+  private queued<T>(edit: () => Promise<T>): Promise<T> {
+    const run = this.edits.then(edit);
+    this.edits = run.catch(() => undefined);
+    return run;
   }
 
   /** Hands `tags` to the viewer (dropped when they hold nothing); false when that failed. */

@@ -162,8 +162,16 @@ export class LevelGraphics {
    * SceneView.setVertexColors.
    */
   setColors(rgb: Float32Array | null): void {
+    // One attribute shared by the surface and its parts, refilled when it fits.
+    const color = this.surface.getAttribute('color') as BufferAttribute | undefined;
+    if (rgb && color && color.array.length === rgb.length) {
+      (color.array as Float32Array).set(rgb);
+      color.needsUpdate = true;
+      return;
+    }
+    const attribute = rgb ? new BufferAttribute(rgb, 3) : null;
     for (const geometry of new Set([this.surface, ...this.surfaceParts])) {
-      if (rgb) geometry.setAttribute('color', new BufferAttribute(rgb, 3));
+      if (attribute) geometry.setAttribute('color', attribute);
       else geometry.deleteAttribute('color');
     }
   }

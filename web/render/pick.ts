@@ -14,6 +14,9 @@ export type Pick = { kind: 'vertex'; vertex: number } | { kind: 'edge'; a: numbe
 /** How near the pointer (CSS pixels) a vertex or an edge must be drawn to be picked. */
 export const PICK_RADIUS = { vertex: 9, edge: 7 } as const;
 
+/** The nearest candidates tried (each a ray against the level's faces): a dense level has many within reach. */
+const MAX_TRIED = 12;
+
 const HIT_MATERIAL = new MeshBasicMaterial({ side: DoubleSide });
 
 /**
@@ -49,7 +52,7 @@ export function pickElement(
     if (d <= PICK_RADIUS.vertex) vertices.push({ d, v });
   }
   vertices.sort((m, n) => m.d - n.d);
-  for (const { v } of vertices) if (!hidden(p.fromArray(positions, 3 * v))) return { kind: 'vertex', vertex: v };
+  for (const { v } of vertices.slice(0, MAX_TRIED)) if (!hidden(p.fromArray(positions, 3 * v))) return { kind: 'vertex', vertex: v };
 
   const candidates: { d: number; a: number; b: number; t: number }[] = [];
   for (let i = 0; i + 1 < segments.length; i += 2) {
@@ -66,7 +69,7 @@ export function pickElement(
   }
   candidates.sort((m, n) => m.d - n.d);
   const q = new Vector3();
-  for (const { a, b, t } of candidates) {
+  for (const { a, b, t } of candidates.slice(0, MAX_TRIED)) {
     // The edge's point under the pointer (t along its picture: near enough for a visibility test).
     p.fromArray(positions, 3 * a).lerp(q.fromArray(positions, 3 * b), t);
     if (!hidden(p)) return { kind: 'edge', a: Math.min(a, b), b: Math.max(a, b) };

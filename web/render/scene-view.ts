@@ -512,6 +512,8 @@ export class SceneView {
       const element = document.createElement('span');
       element.textContent = text;
       element.dataset.testid = 'view.stencil-label';
+      // The panel lists the same weights; a screen reader need not hear the picture's copies.
+      element.setAttribute('aria-hidden', 'true');
       element.style.cssText =
         'font:12px/1.3 system-ui,sans-serif;padding:0 4px;border-radius:3px;' +
         `background:rgba(255,255,255,0.88);color:#1f2937;border:1px solid ${VIEW_COLORS.parents}`;

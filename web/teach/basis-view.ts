@@ -29,7 +29,9 @@ export class BasisView {
   private vertex: number | null = null;
   private shown: BasisState['shown'] = null;
   private message = '';
+  /** The level shown coloured (its index, and its viewer.levelId). */
   private colouredLevel = -1;
+  private colouredId = 0;
   private faces: Uint32Array | null = null;
   private asked = 0;
   private readonly listeners = new Set<(state: BasisState) => void>();
@@ -42,11 +44,17 @@ export class BasisView {
       const faces = viewer.controlMesh?.faceIndices ?? null;
       if (faces !== this.faces) {
         // Another model: its vertex numbers mean other vertices.
+        const marked = this.vertex !== null;
         this.faces = faces;
+        this.asked++;
         this.vertex = null;
         this.shown = null;
         this.colouredLevel = -1;
-      } else if (this.vertex !== null && state.level !== this.colouredLevel && !state.busy) {
+        this.colouredId = 0;
+        if (marked) viewer.view.setSelection(new Float32Array(0), new Float32Array(0));
+      } else if (this.vertex !== null && viewer.levelId() !== this.colouredId && !state.busy) {
+        // Another level, or this one computed again (a crease edit): coloured anew.
+        this.colouredId = viewer.levelId();
         void this.colour(this.vertex);
       }
       this.emit();
@@ -110,9 +118,11 @@ export class BasisView {
   private async colour(vertex: number): Promise<void> {
     const asked = ++this.asked;
     const level = this.viewer.state.level;
+    const id = this.viewer.levelId();
+    this.colouredId = id;
     try {
       const values = await this.viewer.basis(vertex, level);
-      if (asked !== this.asked || !values || this.viewer.state.level !== level) return;
+      if (asked !== this.asked || !values || this.viewer.levelId() !== id) return;
       let max = 0;
       let min = 0;
       let reached = 0;
@@ -129,6 +139,7 @@ export class BasisView {
       if (this.colouredLevel !== level) this.viewer.setLevelColors(this.colouredLevel, null);
       this.viewer.setLevelColors(level, rgb);
       this.colouredLevel = level;
+      this.colouredId = id;
       this.shown = { vertex, level, max, min, reached, count: values.length };
       const control = this.viewer.controlMesh?.positions;
       if (control)

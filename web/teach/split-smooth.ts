@@ -24,7 +24,7 @@ export class SplitSmooth {
   private t = 1;
   private animating = false;
   /** The split points of the shown level, once fetched, and which level (object) they are of. */
-  private split: { key: string; points: Promise<Float32Array | null> } | null = null;
+  private split: { key: number; points: Promise<Float32Array | null> } | null = null;
   private frame = 0;
   private readonly listeners = new Set<(state: SplitState) => void>();
 
@@ -103,10 +103,9 @@ export class SplitSmooth {
     }
   }
 
-  /** The shown level, as a key that changes with the model, scheme and level. */
-  private key(): string {
-    const s = this.viewer.state;
-    return `${this.viewer.generationKey}/${s.level}`;
+  /** The shown level object: another when the level, model, scheme or tags change. */
+  private key(): number {
+    return this.viewer.levelId();
   }
 
   private emit(): void {

@@ -46,9 +46,8 @@ export class StencilInspector {
   private inspecting = false;
   private inspected: InspectedStencil | null = null;
   private message = '';
-  /** The level and model the inspected vertex belongs to: another one drops it. */
-  private shownLevel = -1;
-  private shownFaces: Uint32Array | null = null;
+  /** The level object the inspected vertex belongs to (viewer.levelId): another one drops it. */
+  private shownLevel = 0;
   private readonly listeners = new Set<(state: InspectorState) => void>();
   /** Counts selections, so that a slow table for an earlier click is not shown. */
   private asked = 0;
@@ -58,12 +57,11 @@ export class StencilInspector {
     private readonly viewer: SubdivViewer,
     private readonly onError: (error: unknown) => void,
   ) {
-    viewer.onChange((state) => {
-      const faces = viewer.controlMesh?.faceIndices ?? null;
-      if (state.level !== this.shownLevel || faces !== this.shownFaces) {
-        this.shownLevel = state.level;
-        this.shownFaces = faces;
-        if (this.inspected) this.clear();
+    viewer.onChange(() => {
+      // Another level, or this one computed again (a new model, scheme or crease edit).
+      if (viewer.levelId() !== this.shownLevel) {
+        this.shownLevel = viewer.levelId();
+        this.clear();
       }
       this.emit();
     });
@@ -104,6 +102,7 @@ export class StencilInspector {
   /** Inspects vertex `vertex` of the shown level. */
   async select(vertex: number): Promise<void> {
     const level = this.viewer.state.level;
+    const id = this.viewer.levelId();
     const asked = ++this.asked;
     if (level < 1) {
       this.inspected = null;
@@ -114,7 +113,7 @@ export class StencilInspector {
     }
     try {
       const table = await this.viewer.stencils(level);
-      if (asked !== this.asked || !table) return;
+      if (asked !== this.asked || this.viewer.levelId() !== id || !table) return;
       if (vertex < 0 || vertex >= table.kinds.length) {
         this.message = `Level ${level} has vertices 0 to ${table.kinds.length - 1}.`;
         this.emit();
@@ -148,9 +147,10 @@ export class StencilInspector {
 
   private clear(): void {
     this.asked++;
+    const shown = this.inspected !== null;
     this.inspected = null;
     this.message = '';
-    this.showMarks();
+    if (shown) this.showMarks();
   }
 
   private hint(): string {

@@ -69,7 +69,6 @@ export class BasisPanel {
     this.picking = state.picking;
     this.toggle.disabled = !state.available;
     this.toggle.setAttribute('aria-pressed', String(state.picking));
-    this.toggle.textContent = state.picking ? 'Done with the basis function' : 'Basis function';
     this.message.textContent = state.message;
     this.message.hidden = state.message === '';
     this.row.hidden = !state.picking;

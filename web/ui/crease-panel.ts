@@ -75,7 +75,6 @@ export class CreasePanel {
     this.editing = state.editing;
     this.edit.disabled = !state.available;
     this.edit.setAttribute('aria-pressed', String(state.editing));
-    this.edit.textContent = state.editing ? 'Done editing' : 'Edit creases';
     this.hint.textContent = !state.schemeApplies
       ? `${state.schemeLabel} ignores creases; Catmull-Clark and Loop apply them.`
       : state.editing

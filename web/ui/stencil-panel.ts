@@ -23,6 +23,7 @@ export class StencilPanel {
   private readonly vertex: HTMLInputElement;
   private readonly details: HTMLElement;
   private inspecting = false;
+  private shown: InspectorState['stencil'] = null;
 
   constructor(handlers: StencilPanelHandlers) {
     this.inspect = button(
@@ -61,7 +62,6 @@ export class StencilPanel {
     this.inspecting = state.inspecting;
     this.inspect.disabled = !state.available;
     this.inspect.setAttribute('aria-pressed', String(state.inspecting));
-    this.inspect.textContent = state.inspecting ? 'Done inspecting' : 'Inspect stencils';
     this.message.textContent = state.message;
     this.message.hidden = state.message === '';
     const row = this.vertex.parentElement as HTMLElement;
@@ -69,6 +69,9 @@ export class StencilPanel {
     this.vertex.max = String(Math.max(0, state.vertexCount - 1));
     const s = state.stencil;
     this.details.hidden = !s;
+    // Rebuilt only for another vertex: the region is live, and a screen reader would read it again.
+    if (s === this.shown) return;
+    this.shown = s;
     if (!s) {
       this.details.replaceChildren();
       return;

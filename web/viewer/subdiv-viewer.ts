@@ -71,7 +71,8 @@ export interface SubdivViewerOptions {
 
 /** What the viewer is doing right now. */
 export interface BusyState {
-  kind: 'load' | 'subdivide' | 'export';
+  /** 'compute': a teaching tool's request (stencils, a basis function). */
+  kind: 'load' | 'subdivide' | 'export' | 'compute';
   label: string;
   /** performance.now() when it started. */
   since: number;
@@ -83,7 +84,6 @@ export interface DrawnLevel {
   at: number;
 }
 
-/** A snapshot of the viewer, for panels and tests. */
 /** The vertices of tagged items (`per` an item: 2 for edges, 1 for corners), grouped by the colour of their sharpness. */
 function bySharpnessColor(vertices: Uint32Array, sharpness: Float32Array, per: 1 | 2): Map<string, number[]> {
   const groups = new Map<string, number[]>();
@@ -119,6 +119,7 @@ function tagSummary(tags: MeshTags | null): TagSummary | null {
   };
 }
 
+/** A snapshot of the viewer, for panels and tests. */
 export interface ViewerState {
   modelName: string | null;
   scheme: SchemeName;
@@ -137,6 +138,8 @@ export interface ViewerState {
 }
 
 interface Level {
+  /** Unique to this level object: a recomputed level (a tag edit, a new model) has another. */
+  id: number;
   data: LevelData;
   graphics: LevelGraphics | null;
   /** Its stencils, once asked for (stencils()). */
@@ -145,6 +148,8 @@ interface Level {
 
 export class SubdivViewer {
   readonly view: SceneView;
+  /** The id of the last level made (newLevel). */
+  private lastLevelId = 0;
   /** A level drawn between its split and its own points (setSplitBlend), with its own points. */
   private blend: { level: Level; own: Float32Array; normals: Float32Array } | null = null;
   /** This viewer's requests to the page's core. */
@@ -290,7 +295,7 @@ export class SubdivViewer {
         this.core.release([data.handle]);
         return false;
       }
-      this.levels.push({ data, graphics: null });
+      this.levels.push(this.newLevel(data));
       this.current = this.levels.length - 1;
       this.show();
       return true;
@@ -330,7 +335,7 @@ export class SubdivViewer {
     for (const level of this.levels) level.graphics?.dispose();
     this.core.release(this.levels.map((l) => l.data.handle));
     this.source = mesh;
-    this.levels = made.map((data) => ({ data, graphics: null }));
+    this.levels = made.map((data) => this.newLevel(data));
     this.current = target;
     this.show();
   }
@@ -477,7 +482,9 @@ export class SubdivViewer {
   async stencils(k = this.current): Promise<StencilTable | null> {
     const level = this.levels[k];
     if (k < 1 || !level) return null;
-    level.stencils ??= this.withHandle(k - 1, (h) => this.core.stencils(h, this.stepOptions(k - 1, 1)));
+    level.stencils ??= this.computing(`Working out the stencils of level ${k}…`, () =>
+      this.withHandle(k - 1, (h) => this.core.stencils(h, this.stepOptions(k - 1, 1))),
+    );
     try {
       return await level.stencils;
     } catch (error) {
@@ -494,7 +501,9 @@ export class SubdivViewer {
   async basis(vertex: number, k = this.current): Promise<Float64Array | null> {
     if (!this.levels[k]) return null;
     const { levels: _levels, startLevel: _start, ...options } = this.stepOptions(0, 1);
-    return this.withHandle(0, (h) => this.core.basis(h, vertex, k, { ...options, renderBuffers: false }));
+    return this.computing(`Working out the basis function of vertex ${vertex}…`, () =>
+      this.withHandle(0, (h) => this.core.basis(h, vertex, k, { ...options, renderBuffers: false })),
+    );
   }
 
   /**
@@ -570,11 +579,6 @@ export class SubdivViewer {
     return this.levels[k]?.data.buffers ?? null;
   }
 
-  /** Changes whenever the levels are dropped or replaced (a load, a reset, a scheme or tag change, a cancel). */
-  get generationKey(): number {
-    return this.generation;
-  }
-
   /** The host of the custom scheme's rule set (undefined without one). */
   schemeRulesHost(): RuleHost | undefined {
     return this.schemeOptions.rules?.host;
@@ -626,7 +630,7 @@ export class SubdivViewer {
       for (const level of this.levels) level.graphics?.dispose();
       this.core.release(this.levels.map((l) => l.data.handle));
       this.source = mesh;
-      this.levels = [{ data, graphics: null }];
+      this.levels = [this.newLevel(data)];
       this.current = 0;
       this.name = name;
       this.show();
@@ -729,6 +733,37 @@ export class SubdivViewer {
     }
     level.data.handle = handle;
     return handle;
+  }
+
+  /**
+   * Runs a teaching tool's request as the viewer's busy state (the progress
+   * box shows after a moment; Cancel and Esc stop it), unless a load or step
+   * is already under way.
+   */
+  private async computing<T>(label: string, request: () => Promise<T>): Promise<T> {
+    if (this.busyState) return request();
+    const generation = this.generation;
+    this.setBusy({ kind: 'compute', label, since: performance.now() });
+    try {
+      return await request();
+    } finally {
+      if (generation === this.generation && (this.busyState as BusyState | null)?.kind === 'compute')
+        this.setBusy(null);
+    }
+  }
+
+  private newLevel(data: LevelData): Level {
+    return { id: ++this.lastLevelId, data, graphics: null };
+  }
+
+  /**
+   * The identity of level `k` (default: the shown one): another number
+   * once that level is recomputed or dropped (a tag edit, a new model or
+   * scheme), so that what was worked out for it can be told apart; 0 when
+   * there is none.
+   */
+  levelId(k = this.current): number {
+    return this.levels[k]?.id ?? 0;
   }
 
   private requireLevel(): Level {

@@ -31,6 +31,12 @@ const char* stencil_kind_name(Stencil_kind kind) {
       return "relaxed vertex";
     case Stencil_kind::border_point:
       return "border point";
+    case Stencil_kind::crease_vertex:
+      return "crease vertex";
+    case Stencil_kind::corner_vertex:
+      return "corner vertex";
+    case Stencil_kind::sharp_edge_point:
+      return "sharp edge point";
   }
   return "";
 }
@@ -39,6 +45,16 @@ std::string stencil_formula(const std::string& scheme, Stencil_kind kind) {
   using K = Stencil_kind;
   const bool primal_border =
       kind == K::border_vertex || kind == K::border_edge_point;
+  if (kind == K::crease_vertex)
+    return "(v_a + 6 v + v_b) / 8, v_a and v_b its neighbours along the "
+           "sharp edges (blended with the smooth rule where the sharpness "
+           "is below 1)";
+  if (kind == K::corner_vertex)
+    return "v stays (blended with the smooth rule where the sharpness is "
+           "below 1)";
+  if (kind == K::sharp_edge_point)
+    return "(v0 + v1) / 2 (blended with the smooth rule where the sharpness "
+           "is below 1)";
   if (scheme == "custom") return "the rule set's weights for this kind";
   if (scheme == "catmull-clark") {
     if (kind == K::vertex_point)
@@ -190,6 +206,11 @@ void origins_of(const Level& parent, const std::string& host, bool border_step,
       host == "dqq" ? std::vector<std::uint32_t>() : valences(parent);
   const std::vector<std::uint8_t> on_border =
       host == "dqq" ? std::vector<std::uint8_t>() : border_vertices(parent);
+  // Creasing: the sharp edges at each vertex (OpenSubdiv's vertex rules).
+  std::vector<std::uint32_t> sharp(parent.creased ? V : 0, 0);
+  if (parent.creased)
+    for (std::size_t h = 0; h < parent.halfedge_target.size(); ++h)
+      if (parent.edge_sharpness[h / 2] > 0) ++sharp[parent.halfedge_target[h]];
   const bool primal = host == "pqq" || host == "ptq" || host == "pqt";
   // PQT: face points for the faces that are not triangles, in face order.
   std::vector<std::uint32_t> point_faces;
@@ -225,6 +246,12 @@ void origins_of(const Level& parent, const std::string& host, bool border_step,
       o.kind = on_border[c] ? K::border_vertex
                : primal     ? K::vertex_point
                             : K::relaxed_vertex;
+      if (parent.creased && !on_border[c]) {
+        if (parent.vertex_sharpness[c] > 0 || sharp[c] > 2)
+          o.kind = K::corner_vertex;
+        else if (sharp[c] == 2)
+          o.kind = K::crease_vertex;
+      }
       continue;
     }
     if (primal && c < V + E) {
@@ -235,6 +262,8 @@ void origins_of(const Level& parent, const std::string& host, bool border_step,
       const bool border = parent.halfedge_corner[2 * e] == kNone ||
                           parent.halfedge_corner[2 * e + 1] == kNone;
       o.kind = border ? K::border_edge_point : K::edge_point;
+      if (!border && parent.creased && parent.edge_sharpness[e] > 0)
+        o.kind = K::sharp_edge_point;
       o.size = 2;
       continue;
     }
@@ -245,8 +274,19 @@ void origins_of(const Level& parent, const std::string& host, bool border_step,
       o.size = parent.face_end(o.element) - parent.face_begin(o.element);
       continue;
     }
-    // A √3 border step's points: the faces' and the border edges', in the
-    // order CGAL inserts them; named by what they depend on.
+    // A √3 border step's points: the faces' (a third of each of three
+    // vertices) and the border edges', in the order CGAL inserts them;
+    // named by their weights.
+    const std::uint32_t n_parents = table.offsets[c + 1] - table.offsets[c];
+    bool thirds = n_parents == 3;
+    for (std::uint32_t i = table.offsets[c]; thirds && i < table.offsets[c + 1];
+         ++i)
+      thirds = std::fabs(table.weights[i] - 1.0 / 3) < 1e-12;
+    if (thirds) {
+      o.kind = K::face_point;
+      o.size = 3;
+      continue;
+    }
     bool all_border = true;
     for (std::uint32_t i = table.offsets[c]; i < table.offsets[c + 1]; ++i)
       all_border = all_border && on_border[table.parents[i]] != 0;

@@ -34,9 +34,15 @@ enum class Stencil_kind : std::uint8_t {
   face_point,         ///< a point in a parent face
   corner_point,       ///< Doo-Sabin: a face's corner at a vertex
   border_corner_point,
-  relaxed_vertex,  ///< √3: an old vertex, relaxed
-  border_point,    ///< √3 on a border step: a new point on a border edge
+  relaxed_vertex,    ///< √3: an old vertex, relaxed
+  border_point,      ///< √3 on a border step: a new point on a border edge
+  crease_vertex,     ///< a vertex point on two sharp edges (creasing)
+  corner_vertex,     ///< on three or more sharp edges, or a sharp corner
+  sharp_edge_point,  ///< a point on a sharp edge
 };
+
+/// How many Stencil_kind values there are.
+constexpr int kStencilKinds = 12;
 
 /// "vertex point", "border edge point", ... for messages and JSON.
 const char* stencil_kind_name(Stencil_kind kind);
@@ -81,7 +87,9 @@ struct Stencil_table {
 Result<Stencil_table> step_stencils(const Mesh_buffers& mesh,
                                     const Subdivide_options& options);
 
-constexpr std::uint32_t kMaxStencilParents = 2000000;
+/// The largest level before a step whose stencils are made: the table
+/// and its probes take about 1 KB per parent vertex.
+constexpr std::uint32_t kMaxStencilParents = 250000;
 
 /// The scheme's formula for a kind of refined vertex (empty when it has
 /// none of that kind). `scheme`: a Scheme_info name; "custom" speaks of
