@@ -52,7 +52,8 @@ export function pickElement(
     if (d <= PICK_RADIUS.vertex) vertices.push({ d, v });
   }
   vertices.sort((m, n) => m.d - n.d);
-  for (const { v } of vertices.slice(0, MAX_TRIED)) if (!hidden(p.fromArray(positions, 3 * v))) return { kind: 'vertex', vertex: v };
+  for (const { v } of vertices.slice(0, MAX_TRIED))
+    if (!hidden(p.fromArray(positions, 3 * v))) return { kind: 'vertex', vertex: v };
 
   const candidates: { d: number; a: number; b: number; t: number }[] = [];
   for (let i = 0; i + 1 < segments.length; i += 2) {
