@@ -561,6 +561,8 @@ val js_compare_meshes(const val& reference, const val& candidate,
     out.set("maxError", c.max_error);
     out.set("meanError", c.mean_error);
     out.set("worst", worst);
+    out.set("matched", to_js_array("Uint32Array", c.matched));
+    out.set("errors", to_js_array("Float64Array", c.errors));
     return out;
   });
 }

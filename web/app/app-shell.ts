@@ -12,9 +12,11 @@ import { CancelledError } from '../core/worker-client';
 import { CreaseEditor } from '../edit/crease-editor';
 import { nextRenderMode } from '../render/render-mode';
 import { BasisView } from '../teach/basis-view';
+import { ResultCheck } from '../teach/result-check';
 import { SplitSmooth } from '../teach/split-smooth';
 import { StencilInspector } from '../teach/stencil-inspector';
 import { BasisPanel } from '../ui/basis-panel';
+import { CheckPanel } from '../ui/check-panel';
 import { ConfirmDialog } from '../ui/confirm-dialog';
 import { CreasePanel } from '../ui/crease-panel';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
@@ -70,6 +72,8 @@ export class AppShell {
   private readonly basisPanel: BasisPanel;
   private readonly split: SplitSmooth;
   private readonly splitPanel: SplitPanel;
+  private readonly resultCheck: ResultCheck;
+  private readonly checkPanel: CheckPanel;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
   private readonly exportActions: ExportActions;
@@ -171,6 +175,22 @@ export class AppShell {
     });
     this.split.onChange((state) => this.splitPanel.update(state));
     this.splitPanel.update(this.split.state);
+    this.resultCheck = new ResultCheck(
+      this.viewer,
+      (level) => this.reachLevel(level),
+      (error) => this.showError(this.viewer.state.modelName ?? 'mesh', error),
+    );
+    this.checkPanel = new CheckPanel({
+      onCheck: (name, text, format, level, tolerance) =>
+        void this.resultCheck.check(name, text, format, level, tolerance),
+      onShowStencil: (level, vertex) => {
+        this.viewer.setLevel(level);
+        this.setClickMode('inspect');
+        void this.inspector.select(vertex);
+      },
+    });
+    this.resultCheck.onChange((state) => this.checkPanel.update(state));
+    this.checkPanel.update(this.resultCheck.state);
     // A click on the view picks for the crease editor, the inspector or the basis view, whichever is on.
     this.viewer.view.onClick = (click) => {
       this.creaseEditor.click(click);
@@ -253,6 +273,7 @@ export class AppShell {
       this.stencilPanel.element,
       this.basisPanel.element,
       this.splitPanel.element,
+      this.checkPanel.element,
       this.display.element,
       shortcutsHelp(),
     );
@@ -477,6 +498,15 @@ export class AppShell {
     while (this.viewer.state.levelCount > 0 && this.viewer.state.level < target) {
       if (!(await this.subdivide())) return;
     }
+  }
+
+  /** Computes the levels up to `level` (as Subdivide would) and shows it; false when a step failed or was declined. */
+  private async reachLevel(level: number): Promise<boolean> {
+    while (this.viewer.state.levelCount > 0 && this.viewer.state.levelCount <= level) {
+      if (!(await this.subdivide())) return false;
+    }
+    this.viewer.setLevel(level);
+    return this.viewer.state.level === level;
   }
 
   private confirmLargeStep(info: LargeStepInfo): Promise<boolean> {

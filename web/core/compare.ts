@@ -21,4 +21,7 @@ export interface MeshComparison {
   meanError: number;
   /** The worst vertices (the result's numbers), largest error first, with the reference vertex each was matched to. */
   worst: { vertex: number; reference: number; error: number }[];
+  /** Per result vertex: the reference vertex it was matched to, and their distance. */
+  matched: Uint32Array;
+  errors: Float64Array;
 }

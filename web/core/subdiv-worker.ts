@@ -9,9 +9,11 @@ import type { Mesh, MeshFacts, MeshTags, RenderBuffers } from './mesh';
 import { orientation } from './orientation';
 import {
   checkRules,
+  compareMeshes,
   exportMeshChunks,
   init,
   parseForView,
+  parseMesh,
   predictSize,
   schemeNames,
   stepStencils,
@@ -168,6 +170,11 @@ const handlers: Handlers = {
     await init();
     const points = Float32Array.from(subdivide(keptLevel(handle).mesh, options).positions);
     return { value: points, transfer: [points.buffer] };
+  },
+  async compare({ handle, text, format, tolerance }) {
+    await init();
+    const comparison = compareMeshes(keptLevel(handle).mesh, parseMesh(text, format), tolerance);
+    return { value: comparison, transfer: [comparison.matched.buffer, comparison.errors.buffer] };
   },
   async predict({ handle, options }) {
     await init();

@@ -9,6 +9,7 @@
  * sessions' requests.
  */
 import type { StepOptions } from './basis';
+import type { MeshComparison } from './compare';
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
@@ -315,6 +316,11 @@ export class CoreSession {
   /** The points of `subdivide(handle, options)` as float32, without keeping the result. */
   points(handle: LevelHandle, options: SubdivideOptions): Promise<Float32Array> {
     return this.client.request(this, 'points', { handle, options });
+  }
+
+  /** Parses `text` (a result from elsewhere) and checks it against the kept level `handle`. */
+  compare(handle: LevelHandle, text: string, format: MeshFormat, tolerance: number): Promise<MeshComparison> {
+    return this.client.request(this, 'compare', { handle, text, format, tolerance });
   }
 
   /** Predicted counts and peak bytes of `subdivide(handle, options)`. */

@@ -6,6 +6,7 @@
  * and gets the new level back.
  */
 import type { StepOptions } from './basis';
+import type { MeshComparison } from './compare';
 import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
@@ -57,6 +58,11 @@ export interface WorkerRequests {
   basis: { args: { handle: LevelHandle; vertex: number; levels: number; options: StepOptions }; result: Float64Array };
   /** The points of a step from a kept level (float32, as drawn), without keeping the result. */
   points: { args: { handle: LevelHandle; options: SubdivideOptions }; result: Float32Array };
+  /** Parses a result (OFF/OBJ text) and checks it against a kept level (compare.ts). */
+  compare: {
+    args: { handle: LevelHandle; text: string; format: MeshFormat; tolerance: number };
+    result: MeshComparison;
+  };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */

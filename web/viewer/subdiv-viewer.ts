@@ -12,6 +12,7 @@
  */
 
 import type { BufferAttribute } from 'three';
+import type { MeshComparison } from '../core/compare';
 import type {
   BoundaryInterpolation,
   CreaseMethod,
@@ -572,6 +573,17 @@ export class SubdivViewer {
     position.needsUpdate = true;
     normal.needsUpdate = true;
     this.view.requestRender();
+  }
+
+  /**
+   * Checks a result from elsewhere (OFF/OBJ text) against computed level
+   * `k` (compare.ts): `tolerance` is a share of the level's diagonal.
+   */
+  async checkResult(k: number, text: string, format: MeshFormat, tolerance: number): Promise<MeshComparison | null> {
+    if (!this.levels[k]) return null;
+    return this.computing(`Checking the result against level ${k}…`, () =>
+      this.withHandle(k, (h) => this.core.compare(h, text, format, tolerance)),
+    );
   }
 
   /** The render buffers of level `k` (null: not computed), as the view draws them. */

@@ -161,6 +161,8 @@ Mesh_comparison compare_meshes(const Mesh_buffers& reference,
   for (std::size_t i = 0; i < n; ++i)
     c.worst.push_back({order[i], map[order[i]], error[order[i]]});
   c.match = c.reasons.empty();
+  c.matched = std::move(map);
+  c.errors = std::move(error);
   return c;
 }
 

@@ -41,6 +41,10 @@ struct Mesh_comparison {
   double max_error = 0, mean_error = 0;
   /// The worst vertices, at most `worst` of them, largest error first.
   std::vector<Vertex_error> worst;
+  /// Per candidate vertex: the reference vertex it was matched to, and
+  /// their distance (for colouring a result by its errors).
+  std::vector<std::uint32_t> matched;
+  std::vector<double> errors;
 };
 
 /// Compares `candidate` with `reference`; `relative_tolerance` is a share

@@ -1,0 +1,72 @@
+/**
+ * Check a result: a student's Catmull-Clark level 2 of the cube, made by an
+ * independent implementation (tests/unit/reference-subdivision.ts) and
+ * written in its own vertex order, is a match; with one vertex moved it is a
+ * mismatch naming that vertex, the surface coloured by the errors, and its
+ * expected stencil one click away.
+ */
+import { readFileSync } from 'node:fs';
+import { catmullClarkStep, repeat } from '../unit/reference-subdivision';
+import type { PlainMesh } from '../unit/test-helpers';
+import { expect, test } from './fixtures';
+
+const CUBE = readFileSync('tests/fixtures/cube.off', 'utf8');
+
+/** The cube as plain arrays: the lines after "OFF" and the counts. */
+function plainCube(): PlainMesh {
+  const lines = CUBE.split('\n').filter((line) => line.trim() !== '' && !line.startsWith('#'));
+  const numbers = (line: string) => line.trim().split(/\s+/).map(Number);
+  return {
+    points: lines.slice(2, 10).map((line) => numbers(line) as [number, number, number]),
+    faces: lines.slice(10, 16).map((line) => numbers(line).slice(1)),
+  };
+}
+
+/** OFF text with the vertices written in reverse order, as another program might. */
+function reversedOff(mesh: PlainMesh): string {
+  const n = mesh.points.length;
+  const lines = ['OFF', `${n} ${mesh.faces.length} 0`, ...[...mesh.points].reverse().map((p) => p.join(' '))];
+  for (const f of mesh.faces) lines.push(`${f.length} ${f.map((v) => n - 1 - v).join(' ')}`);
+  return `${lines.join('\n')}\n`;
+}
+
+test("a student's Catmull-Clark level 2: a match, then one moved vertex named, coloured and its stencil shown", async ({
+  app,
+}) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  const level2 = repeat(catmullClarkStep, plainCube(), 2);
+  await app.byTestId('check.level').fill('2');
+  await app.byTestId('check.file').setInputFiles({
+    name: 'my-cc2.off',
+    mimeType: 'text/plain',
+    buffer: Buffer.from(reversedOff(level2)),
+  });
+  await app.byTestId('check.run').click();
+  await expect(app.byTestId('check.verdict')).toHaveText('✓ my-cc2.off is level 2.');
+  await expect(app.byTestId('check.summary')).toContainText('vertices matched to the nearest');
+  // The app computed levels 1 and 2 to check against, and shows level 2.
+  expect(await app.state()).toMatchObject({ level: 2, levelCount: 3 });
+
+  const n = level2.points.length;
+  const moved = structuredClone(level2);
+  moved.points[n - 1 - 30][0] += 0.1;
+  await app.byTestId('check.file').setInputFiles({
+    name: 'my-cc2-moved.off',
+    mimeType: 'text/plain',
+    buffer: Buffer.from(reversedOff(moved)),
+  });
+  const plain = await app.canvasPixels();
+  await app.byTestId('check.run').click();
+  await expect(app.byTestId('check.verdict')).toHaveText('✗ my-cc2-moved.off is not level 2.');
+  await expect(app.byTestId('check.reasons')).toHaveText(
+    '1 vertex of 98 is farther from the reference than the tolerance',
+  );
+  await expect(app.byTestId('check.worst').locator('li')).toHaveCount(1);
+  await expect(app.byTestId('check.worst').locator('li').first()).toContainText('Your vertex 30: 0.100 off');
+  await expect.poll(async () => (await app.canvasPixels()).equals(plain)).toBe(false);
+  await app.snapshot('check-result-mismatch');
+  await app.byTestId('check.worst').getByRole('button', { name: 'its stencil' }).click();
+  await expect(app.byTestId('stencils.inspect')).toHaveAttribute('aria-pressed', 'true');
+  await expect(app.byTestId('stencils.title')).toHaveText(/^Vertex \d+ of level 2$/);
+});
