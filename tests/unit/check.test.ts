@@ -127,3 +127,39 @@ describe('subdiv check', () => {
     expect(missing.stderr).toBe(`error: ${join(work, 'nothing.off')}: cannot read: no such file\n`);
   });
 });
+
+describe('subdiv compare', () => {
+  /** A square of side `side` at height z, as OFF. */
+  const square = (z: number, side = 1) =>
+    `OFF\n4 1 0\n0 0 ${z}\n${side} 0 ${z}\n${side} ${side} ${z}\n0 ${side} ${z}\n4 0 1 2 3\n`;
+
+  it('prints the symmetric Hausdorff distance: 0.1 between parallel squares, sqrt 2 to a larger one', () => {
+    const [a, b, c] = ['a.off', 'b.off', 'c.off'].map((name) => join(work, name));
+    writeFileSync(a, square(0));
+    writeFileSync(b, square(0.1));
+    writeFileSync(c, square(0, 2));
+    const parallel = subdiv(['compare', a, b]);
+    expect(parallel.stderr).toBe('');
+    expect(parallel.status).toBe(0);
+    const report = JSON.parse(parallel.stdout);
+    expect(Object.keys(report)).toEqual(['distance', 'relative', 'diagonal', 'errorBound']);
+    expect(Math.abs(report.distance - 0.1)).toBeLessThanOrEqual(report.errorBound);
+    expect(report.relative).toBeCloseTo(report.distance / report.diagonal, 15);
+    const larger = JSON.parse(subdiv(['compare', a, c]).stdout);
+    expect(Math.abs(larger.distance - Math.SQRT2)).toBeLessThanOrEqual(larger.errorBound);
+  });
+
+  it('tells Catmull-Clark and Loop apart on the cube, and refuses bad usage', () => {
+    const cc = join(work, 'cube-cc3.off');
+    const loop = join(work, 'cube-loop3.off');
+    const cube = join(FIXTURES_DIR, 'cube.off');
+    expect(subdiv([cube, '--levels', '3', '-o', cc]).status).toBe(0);
+    expect(subdiv([cube, '--scheme', 'loop', '--triangulate', '--levels', '3', '-o', loop]).status).toBe(0);
+    const schemes = JSON.parse(subdiv(['compare', cc, loop]).stdout);
+    expect(schemes.relative).toBeGreaterThan(0.001);
+    expect(JSON.parse(subdiv(['compare', cc, cc]).stdout).distance).toBeLessThan(1e-9);
+    const one = subdiv(['compare', cc]);
+    expect(one.status).toBe(2);
+    expect(one.stderr).toMatch(/^subdiv: subdiv compare takes two files: A B\n/);
+  });
+});

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/compare.h"
+#include "core/hausdorff.h"
 #include "core/level_view.h"
 #include "core/mesh_facts.h"
 #include "core/mesh_io.h"
@@ -567,6 +568,20 @@ val js_compare_meshes(const val& reference, const val& candidate,
   });
 }
 
+/// hausdorff_distance (hausdorff.h).
+val js_hausdorff_distance(const val& a, const val& b) {
+  return guarded([&] {
+    const Result<Hausdorff_distance> r =
+        hausdorff_distance(from_js_mesh(a), from_js_mesh(b));
+    if (!r.ok()) return to_js_status(r.status);
+    val out = ok_object();
+    out.set("distance", r.value.distance);
+    out.set("diagonal", r.value.diagonal);
+    out.set("errorBound", r.value.error_bound);
+    return out;
+  });
+}
+
 val js_predict_size(const val& mesh, const val& js_options) {
   return guarded([&] {
     const Mesh_buffers in = from_js_mesh(mesh);
@@ -829,6 +844,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("predict_size", &subdivlab::js_predict_size);
   emscripten::function("step_stencils", &subdivlab::js_step_stencils);
   emscripten::function("compare_meshes", &subdivlab::js_compare_meshes);
+  emscripten::function("hausdorff_distance", &subdivlab::js_hausdorff_distance);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

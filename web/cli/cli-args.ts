@@ -7,6 +7,7 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
        subdiv info INPUT
        subdiv stencil INPUT --level K --vertex I [--scheme S] [--triangulate] [--rule RULES.json] ...
        subdiv check CONTROL RESULT [--scheme S] [--levels K] [--tolerance T] [--triangulate] ...
+       subdiv compare A B
 
   INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
   --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
@@ -42,13 +43,17 @@ that fits, else each to the nearest reference vertex. It prints the verdict, the
 the largest and mean errors and the worst vertices (by their number in RESULT) as JSON, and
 exits 0 on a match, 1 on a mismatch. It takes the subdividing options but -o and --stats.
 
+subdiv compare A B prints the symmetric Hausdorff distance between the two surfaces as
+JSON: distance, relative (to the bounding-box diagonal of both), diagonal and errorBound
+(the distance is within it of the true one: 1e-4 of the diagonal).
+
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
 
 /** A command line that made sense. */
 export interface CliArgs {
-  /** `subdiv info INPUT`, `subdiv stencil INPUT ...`, `subdiv check CONTROL RESULT` or the default, subdividing. */
-  command: 'subdivide' | 'info' | 'stencil' | 'check';
+  /** `subdiv info|stencil|check|compare ...`, or the default, subdividing. */
+  command: 'subdivide' | 'info' | 'stencil' | 'check' | 'compare';
   input: string;
   scheme: string;
   levels: number;
@@ -115,6 +120,7 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const help = values.help === true;
   if (help) return { ...NO_OPTIONS, command: 'subdivide', input: '', scheme: '', help };
   if (positionals[0] === 'info') return infoArgs(parsed);
+  if (positionals[0] === 'compare') return compareArgs(parsed);
   const stencil = positionals[0] === 'stencil';
   const check = positionals[0] === 'check';
   const inputs = stencil || check ? positionals.slice(1) : positionals;
@@ -185,6 +191,14 @@ function count(text: string | undefined, name: string, least: number): number {
 
 const CREASE_METHODS: CreaseMethod[] = ['uniform', 'chaikin'];
 const BOUNDARIES: BoundaryInterpolation[] = ['edge', 'edge-and-corner', 'none'];
+
+/** `subdiv compare A B`: two files and no options. */
+function compareArgs({ values, positionals }: ReturnType<typeof parse>): CliArgs {
+  if (positionals.length !== 3) throw new UsageError('subdiv compare takes two files: A B');
+  const given = Object.keys(values);
+  if (given.length > 0) throw new UsageError(`subdiv compare takes no options, not --${given[0]}`);
+  return { ...NO_OPTIONS, command: 'compare', input: positionals[1], result: positionals[2], scheme: '', help: false };
+}
 
 /** `subdiv info INPUT`: one file and no options (they are subdividing's). */
 function infoArgs({ values, positionals }: ReturnType<typeof parse>): CliArgs {

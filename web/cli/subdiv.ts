@@ -12,6 +12,7 @@ import { fraction, vertexStencil } from '../core/stencils';
 import {
   compareMeshes,
   formatFromFileName,
+  hausdorffDistance,
   hostOf,
   meshFacts,
   parseMesh,
@@ -237,8 +238,31 @@ async function check(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Prom
   if (!c.match) throw new Mismatch();
 }
 
+/** `subdiv compare A B`: the symmetric Hausdorff distance between the two surfaces, as JSON. */
+async function compare(args: CliArgs, io: CliIo): Promise<void> {
+  await initNode();
+  const meshes = [args.input, args.result].map((path) => {
+    const text = readInput(path);
+    try {
+      return parseMesh(text, inputFormat(path, text));
+    } catch (error) {
+      if (error instanceof SubdivError) throw new InputError(locate(path, error));
+      throw error;
+    }
+  });
+  const h = hausdorffDistance(meshes[0], meshes[1]);
+  const report = {
+    distance: h.distance,
+    relative: h.diagonal > 0 ? h.distance / h.diagonal : 0,
+    diagonal: h.diagonal,
+    errorBound: h.errorBound,
+  };
+  io.stdout(`${JSON.stringify(report, null, 2)}\n`);
+}
+
 async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'info') return info(args, io);
+  if (args.command === 'compare') return compare(args, io);
   await initNode();
   const schemes = schemeNames();
   if (!schemes.includes(args.scheme)) {

@@ -43,6 +43,7 @@ interface CoreModule {
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   step_stencils(mesh: Mesh, options: CoreOptions): RawResult<StencilTable>;
   compare_meshes(reference: Mesh, result: Mesh, relativeTolerance: number): RawResult<MeshComparison>;
+  hausdorff_distance(a: Mesh, b: Mesh): RawResult<HausdorffDistance>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -267,6 +268,24 @@ export function compareMeshes(reference: Mesh, result: Mesh, relativeTolerance: 
     ok: true;
   };
   return comparison;
+}
+
+/** The symmetric Hausdorff distance between two surfaces. */
+export interface HausdorffDistance {
+  distance: number;
+  /** The bounding-box diagonal of both together. */
+  diagonal: number;
+  /** `distance` is within this of the true distance (1e-4 of the diagonal). */
+  errorBound: number;
+}
+
+/**
+ * The symmetric Hausdorff distance between `a` and `b` (CGAL's bounded-error
+ * algorithm on both triangulated): how far apart two schemes' surfaces are.
+ */
+export function hausdorffDistance(a: Mesh, b: Mesh): HausdorffDistance {
+  const { ok: _ok, ...h } = unwrap(module().hausdorff_distance(a, b)) as HausdorffDistance & { ok: true };
+  return h;
 }
 
 /** Counts and peak heap bytes predicted for `subdivide(mesh, options)`, without subdividing. */

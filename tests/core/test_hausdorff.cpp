@@ -1,0 +1,50 @@
+// The symmetric Hausdorff distance (core/hausdorff.h): exact on shapes
+// whose distance is known, zero from a mesh to itself.
+#include <gtest/gtest.h>
+
+#include "core/hausdorff.h"
+#include "core/subdivide.h"
+#include "refine_test_support.h"
+
+namespace subdivlab {
+namespace {
+
+Mesh_buffers square(double z, double side = 1) {
+  Mesh_buffers m;
+  m.positions = {0, 0, z, side, 0, z, side, side, z, 0, side, z};
+  m.face_sizes = {4};
+  m.face_indices = {0, 1, 2, 3};
+  return m;
+}
+
+TEST(Hausdorff, KnownDistances) {
+  // Two parallel unit squares 0.1 apart: every point is 0.1 from the other.
+  const auto parallel = hausdorff_distance(square(0), square(0.1));
+  ASSERT_TRUE(parallel.ok()) << parallel.status.message;
+  EXPECT_NEAR(parallel.value.distance, 0.1, parallel.value.error_bound);
+  // A unit square and a 2 x 2 one in the same plane: the far corner (2, 2)
+  // is sqrt(2) from (1, 1).
+  const auto bigger = hausdorff_distance(square(0), square(0, 2));
+  ASSERT_TRUE(bigger.ok());
+  EXPECT_NEAR(bigger.value.distance, std::sqrt(2.0), bigger.value.error_bound);
+  // A mesh and itself; a mesh and its own subdivision (linear keeps the
+  // surface).
+  const Mesh_buffers cube = refine_test::fixture("cube.off");
+  EXPECT_NEAR(hausdorff_distance(cube, cube).value.distance, 0, 1e-9);
+  Subdivide_options o;
+  o.scheme = "linear";
+  o.levels = 2;
+  const auto linear = hausdorff_distance(cube, subdivide_mesh(cube, o).value);
+  EXPECT_NEAR(linear.value.distance, 0, linear.value.error_bound);
+}
+
+TEST(Hausdorff, RefusesAnInvalidMesh) {
+  Mesh_buffers bad = square(0);
+  bad.face_indices = {0, 1, 2, 7};
+  const auto r = hausdorff_distance(bad, square(0));
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
+}
+
+}  // namespace
+}  // namespace subdivlab
