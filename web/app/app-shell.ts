@@ -149,26 +149,22 @@ export class AppShell {
       onReset: () => this.viewer.reset(),
       onLevel: (k) => this.viewer.setLevel(k),
     });
-    this.creaseEditor = new CreaseEditor(this.viewer, (error) =>
-      this.showError(this.viewer.state.modelName ?? 'mesh', error),
-    );
-    this.inspector = new StencilInspector(this.viewer, (error) =>
-      this.showError(this.viewer.state.modelName ?? 'mesh', error),
-    );
+    this.creaseEditor = new CreaseEditor(this.viewer, (error) => this.modelError(error));
+    this.inspector = new StencilInspector(this.viewer, (error) => this.modelError(error));
     this.stencilPanel = new StencilPanel({
       onInspecting: (on) => this.setClickMode(on ? 'inspect' : null),
       onVertex: (vertex) => void this.inspector.select(vertex),
     });
     this.inspector.onChange((state) => this.stencilPanel.update(state));
     this.stencilPanel.update(this.inspector.state);
-    this.basis = new BasisView(this.viewer, (error) => this.showError(this.viewer.state.modelName ?? 'mesh', error));
+    this.basis = new BasisView(this.viewer, (error) => this.modelError(error));
     this.basisPanel = new BasisPanel({
       onPicking: (on) => this.setClickMode(on ? 'basis' : null),
       onVertex: (vertex) => void this.basis.select(vertex),
     });
     this.basis.onChange((state) => this.basisPanel.update(state));
     this.basisPanel.update(this.basis.state);
-    this.split = new SplitSmooth(this.viewer, (error) => this.showError(this.viewer.state.modelName ?? 'mesh', error));
+    this.split = new SplitSmooth(this.viewer, (error) => this.modelError(error));
     this.splitPanel = new SplitPanel({
       onT: (t) => void this.split.setT(t),
       onAnimate: () => this.split.animate(),
@@ -178,7 +174,7 @@ export class AppShell {
     this.resultCheck = new ResultCheck(
       this.viewer,
       (level) => this.reachLevel(level),
-      (error) => this.showError(this.viewer.state.modelName ?? 'mesh', error),
+      (error) => this.modelError(error),
     );
     this.checkPanel = new CheckPanel({
       onCheck: (name, text, format, level, tolerance) =>
@@ -446,6 +442,11 @@ export class AppShell {
     if (mode === 'creases') this.creaseEditor.setEditing(true);
     if (mode === 'inspect') this.inspector.setInspecting(true);
     if (mode === 'basis') this.basis.setPicking(true);
+  }
+
+  /** Shows an error about the shown model (a teaching tool's or an edit's request that failed). */
+  private modelError(error: unknown): void {
+    this.showError(this.viewer.state.modelName ?? 'mesh', error);
   }
 
   /** Names the file's tags that the core reads but does not apply (their lines), or hides such a notice of an earlier file. */

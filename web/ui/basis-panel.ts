@@ -5,7 +5,7 @@
  */
 import { INFLUENCE_STOPS } from '../render/level-graphics';
 import type { BasisState } from '../teach/basis-view';
-import { button, el, section, uniqueId } from './dom';
+import { button, el, section, vertexField } from './dom';
 
 export interface BasisPanelHandlers {
   onPicking: (on: boolean) => void;
@@ -32,21 +32,9 @@ export class BasisPanel {
       "Colour the surface by a control vertex's influence",
     );
     this.message = el('p', { testId: 'basis.message', className: 'hint' });
-    const vertexId = uniqueId('basis-vertex');
-    this.vertex = el('input', {
-      testId: 'basis.vertex',
-      attrs: { id: vertexId, type: 'number', min: '0', step: '1', inputmode: 'numeric' },
-    });
-    this.vertex.addEventListener('change', () => {
-      const v = Number(this.vertex.value);
-      if (this.vertex.value !== '' && Number.isInteger(v)) handlers.onVertex(v);
-    });
-    this.row = el(
-      'div',
-      { className: 'row' },
-      el('label', { attrs: { for: vertexId }, text: 'Control vertex' }),
-      this.vertex,
-    );
+    const field = vertexField('Control vertex', 'basis.vertex', handlers.onVertex);
+    this.vertex = field.input;
+    this.row = field.row;
     this.low = el('span', { testId: 'basis.low' });
     this.high = el('span', { testId: 'basis.high' });
     const bar = el('div', {

@@ -74,3 +74,24 @@ export function dropdown(label: string, testId: string, ...children: Node[]): HT
   });
   return details;
 }
+
+/**
+ * A labelled field for a vertex number (a row: label, input): `onVertex`
+ * hears each whole number entered (Enter or leaving the field).
+ */
+export function vertexField(
+  label: string,
+  testId: string,
+  onVertex: (vertex: number) => void,
+): { row: HTMLElement; input: HTMLInputElement } {
+  const id = uniqueId(testId.replace(/\./g, '-'));
+  const input = el('input', {
+    testId,
+    attrs: { id, type: 'number', min: '0', step: '1', inputmode: 'numeric' },
+  });
+  input.addEventListener('change', () => {
+    const v = Number(input.value);
+    if (input.value !== '' && Number.isInteger(v)) onVertex(v);
+  });
+  return { row: el('div', { className: 'row' }, el('label', { attrs: { for: id }, text: label }), input), input };
+}

@@ -5,7 +5,7 @@
  * the sums that prove them (Σ w = 1, Σ w·p = p).
  */
 import type { InspectorState } from '../teach/stencil-inspector';
-import { button, el, section, uniqueId } from './dom';
+import { button, el, section, vertexField } from './dom';
 
 export interface StencilPanelHandlers {
   onInspecting: (on: boolean) => void;
@@ -34,28 +34,14 @@ export class StencilPanel {
     );
     this.inspect.setAttribute('aria-keyshortcuts', 'w');
     this.message = el('p', { testId: 'stencils.message', className: 'hint' });
-    const vertexId = uniqueId('stencil-vertex');
-    this.vertex = el('input', {
-      testId: 'stencils.vertex',
-      attrs: { id: vertexId, type: 'number', min: '0', step: '1', inputmode: 'numeric' },
-    });
-    this.vertex.addEventListener('change', () => {
-      const v = Number(this.vertex.value);
-      if (this.vertex.value !== '' && Number.isInteger(v)) handlers.onVertex(v);
-    });
+    const field = vertexField('Vertex', 'stencils.vertex', handlers.onVertex);
+    this.vertex = field.input;
     this.details = el('div', {
       testId: 'stencils.details',
       className: 'stencil-details',
       attrs: { 'aria-live': 'polite' },
     });
-    this.element = section(
-      'Stencils',
-      'stencil-panel',
-      this.inspect,
-      this.message,
-      el('div', { className: 'row' }, el('label', { attrs: { for: vertexId }, text: 'Vertex' }), this.vertex),
-      this.details,
-    );
+    this.element = section('Stencils', 'stencil-panel', this.inspect, this.message, field.row, this.details);
   }
 
   update(state: InspectorState): void {
