@@ -12,6 +12,8 @@
 #include <tuple>
 #include <vector>
 
+#include "mesh_facts.h"
+
 namespace subdivlab {
 namespace {
 
@@ -53,20 +55,6 @@ std::multiset<std::vector<std::uint32_t>> face_cycles(
   return out;
 }
 
-double bbox_diagonal(const Mesh_buffers& m) {
-  double lo[3] = {INFINITY, INFINITY, INFINITY},
-         hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (std::size_t v = 0; v < m.vertex_count(); ++v)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], m.positions[3 * v + i]);
-      hi[i] = std::max(hi[i], m.positions[3 * v + i]);
-    }
-  double d = 0;
-  for (int i = 0; i < 3; ++i)
-    d += hi[i] > lo[i] ? (hi[i] - lo[i]) * (hi[i] - lo[i]) : 0;
-  return std::sqrt(d);
-}
-
 std::string count_text(std::uint64_t n, const std::string& what) {
   if (n == 1) return "1 " + what;
   return std::to_string(n) + " " + (what == "vertex" ? "vertices" : what + "s");
@@ -84,7 +72,7 @@ Mesh_comparison compare_meshes(const Mesh_buffers& reference,
   c.vertices[1] = C;
   c.faces[0] = reference.face_count();
   c.faces[1] = candidate.face_count();
-  c.diagonal = bbox_diagonal(reference);
+  c.diagonal = bbox_diagonal({&reference});
   c.tolerance = relative_tolerance * c.diagonal;
   if (R != C)
     c.reasons.push_back("the result has " + count_text(C, "vertex") +

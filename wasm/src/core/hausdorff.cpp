@@ -4,10 +4,10 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 
 #include "mesh_build.h"
+#include "mesh_facts.h"
 
 namespace subdivlab {
 
@@ -24,15 +24,7 @@ Result<Hausdorff_distance> hausdorff_distance(const Mesh_buffers& a,
   PMP::triangulate_faces(ma);
   PMP::triangulate_faces(mb);
   Hausdorff_distance h;
-  double lo[3] = {INFINITY, INFINITY, INFINITY},
-         hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (const Mesh_buffers* m : {&a, &b})
-    for (std::size_t i = 0; i < m->positions.size(); ++i) {
-      lo[i % 3] = std::min(lo[i % 3], m->positions[i]);
-      hi[i % 3] = std::max(hi[i % 3], m->positions[i]);
-    }
-  for (int i = 0; i < 3; ++i) h.diagonal += (hi[i] - lo[i]) * (hi[i] - lo[i]);
-  h.diagonal = std::sqrt(h.diagonal);
+  h.diagonal = bbox_diagonal({&a, &b});
   h.error_bound = std::max(relative_error * h.diagonal, 1e-12);
   h.distance =
       PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(

@@ -5,6 +5,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "mesh_build.h"
@@ -106,6 +107,20 @@ bool refined_facts(const Mesh_buffers& child, std::size_t edges,
   facts.control_edges = child.control_edges.size() / 2;
   out = facts;
   return true;
+}
+
+double bbox_diagonal(std::initializer_list<const Mesh_buffers*> meshes) {
+  double lo[3] = {INFINITY, INFINITY, INFINITY},
+         hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (const Mesh_buffers* m : meshes)
+    for (std::size_t i = 0; i < m->positions.size(); ++i) {
+      lo[i % 3] = std::min(lo[i % 3], m->positions[i]);
+      hi[i % 3] = std::max(hi[i % 3], m->positions[i]);
+    }
+  double d = 0;
+  for (int i = 0; i < 3; ++i)
+    if (hi[i] > lo[i]) d += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  return std::sqrt(d);
 }
 
 }  // namespace subdivlab

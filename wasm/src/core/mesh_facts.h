@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 
 #include "mesh_types.h"
 
@@ -34,5 +35,9 @@ Result<Mesh_facts> compute_facts(const Mesh_buffers& mesh);
 /// the counts say otherwise (the caller then asks compute_facts).
 bool refined_facts(const Mesh_buffers& child, std::size_t edges,
                    const Mesh_facts& parent, Mesh_facts& out);
+
+/// The diagonal of the bounding box of the points of `meshes` together (0
+/// without points): the scale that tolerances and distances are shares of.
+double bbox_diagonal(std::initializer_list<const Mesh_buffers*> meshes);
 
 }  // namespace subdivlab

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "refine/level_convert.h"
+
 namespace subdivlab {
 
 using refine::kNone;
@@ -175,37 +177,17 @@ std::uint32_t colour_vertices(const Level& level, int reach,
   return colours;
 }
 
-/// Edges at each vertex (its valence), from the halfedges pointing to it
-/// (zeros where the level's halfedge tables are gone).
-std::vector<std::uint32_t> valences(const Level& level) {
-  std::vector<std::uint32_t> n(level.vertex_count, 0);
-  for (std::uint32_t v : level.halfedge_target) ++n[v];
-  return n;
-}
-
-/// Whether vertex v of `level` is on the border: one of its halfedges has
-/// no face (none where the level's halfedge tables are gone).
-std::vector<std::uint8_t> border_vertices(const Level& level) {
-  std::vector<std::uint8_t> on(level.vertex_count, 0);
-  if (level.halfedge_corner.size() != level.halfedge_target.size()) return on;
-  for (std::size_t h = 0; h < level.halfedge_target.size(); ++h)
-    if (level.halfedge_corner[h] == kNone) {
-      on[level.halfedge_target[h]] = 1;
-      on[level.halfedge_target[h ^ 1]] = 1;
-    }
-  return on;
-}
-
 /// Each refined vertex's origin, by the host's numbering (primal_hosts.h,
 /// sqrt3_host.h; Doo-Sabin's corners by their largest weight).
 void origins_of(const Level& parent, const std::string& host, bool border_step,
                 Stencil_table& table) {
   using K = Stencil_kind;
   const std::uint32_t V = parent.vertex_count, E = parent.edge_count;
-  const std::vector<std::uint32_t> valence =
-      host == "dqq" ? std::vector<std::uint32_t>() : valences(parent);
-  const std::vector<std::uint8_t> on_border =
-      host == "dqq" ? std::vector<std::uint8_t>() : border_vertices(parent);
+  // Valences and border vertices (the DQQ host has dropped its halfedge
+  // tables by now, and names its corners otherwise).
+  std::vector<std::uint32_t> valence;
+  std::vector<bool> on_border;
+  if (host != "dqq") refine::vertex_valences(parent, valence, on_border);
   // Creasing: the sharp edges at each vertex (OpenSubdiv's vertex rules).
   std::vector<std::uint32_t> sharp(parent.creased ? V : 0, 0);
   if (parent.creased)
@@ -289,7 +271,7 @@ void origins_of(const Level& parent, const std::string& host, bool border_step,
     }
     bool all_border = true;
     for (std::uint32_t i = table.offsets[c]; i < table.offsets[c + 1]; ++i)
-      all_border = all_border && on_border[table.parents[i]] != 0;
+      all_border = all_border && on_border[table.parents[i]];
     o.kind = all_border ? K::border_point : K::face_point;
     o.size = table.offsets[c + 1] - table.offsets[c];
   }
