@@ -11,7 +11,7 @@ import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
-import { compareMeshes, subdivide } from '../../web/core/subdiv-core';
+import { compareMeshes, hausdorffDistance, subdivide } from '../../web/core/subdiv-core';
 import { catmullClarkStep, loopStep, repeat } from './reference-subdivision';
 import { FIXTURES_DIR, loadFixture, type PlainMesh, toPlain } from './test-helpers';
 
@@ -161,5 +161,39 @@ describe('subdiv compare', () => {
     const one = subdiv(['compare', cc]);
     expect(one.status).toBe(2);
     expect(one.stderr).toMatch(/^subdiv: subdiv compare takes two files: A B\n/);
+  });
+});
+
+describe('hausdorffDistance with vertex distances (side-by-side colours)', () => {
+  /** A square of side `side` at height z. */
+  const square = (z: number, side = 1) => ({
+    positions: new Float64Array([0, 0, z, side, 0, z, side, side, z, 0, side, z]),
+    faceSizes: new Uint32Array([4]),
+    faceIndices: new Uint32Array([0, 1, 2, 3]),
+    controlEdges: new Uint32Array(0),
+  });
+
+  it("gives each vertex's distance to the other surface: its own distances worked out by hand", () => {
+    const h = hausdorffDistance(square(0), square(0, 2), true);
+    // The unit square lies in the 2 x 2 one; the larger one's corners (0,0), (2,0), (2,2), (0,2)
+    // are 0, 1, sqrt 2 and 1 from it, and sqrt 2 is the Hausdorff distance.
+    expect(Array.from(h.aToB ?? [])).toEqual([0, 0, 0, 0]);
+    const expected = [0, 1, Math.SQRT2, 1];
+    (h.bToA ?? []).forEach((d, v) => expect(d).toBeCloseTo(expected[v], 15));
+    expect(h.bToA).toHaveLength(4);
+    expect(Math.abs(h.distance - Math.SQRT2)).toBeLessThanOrEqual(h.errorBound);
+    expect(hausdorffDistance(square(0), square(0.1)).aToB).toBeUndefined();
+  });
+
+  it('keeps every vertex within the distance for Catmull-Clark against Loop on the cube', () => {
+    const cube = loadFixture('cube.off');
+    const cc = subdivide(cube, { scheme: 'catmull-clark', levels: 2 });
+    const loop = subdivide(cube, { scheme: 'loop', levels: 2, triangulate: true });
+    const h = hausdorffDistance(cc, loop, true);
+    expect(h.aToB).toHaveLength(cc.positions.length / 3);
+    expect(h.bToA).toHaveLength(loop.positions.length / 3);
+    const farthest = Math.max(...(h.aToB ?? []), ...(h.bToA ?? []));
+    expect(farthest).toBeLessThanOrEqual(h.distance + h.errorBound);
+    expect(farthest).toBeGreaterThan(0.5 * h.distance);
   });
 });

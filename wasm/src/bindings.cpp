@@ -569,15 +569,19 @@ val js_compare_meshes(const val& reference, const val& candidate,
 }
 
 /// hausdorff_distance (hausdorff.h).
-val js_hausdorff_distance(const val& a, const val& b) {
+val js_hausdorff_distance(const val& a, const val& b, bool vertex_distances) {
   return guarded([&] {
-    const Result<Hausdorff_distance> r =
-        hausdorff_distance(from_js_mesh(a), from_js_mesh(b));
+    const Result<Hausdorff_distance> r = hausdorff_distance(
+        from_js_mesh(a), from_js_mesh(b), 1e-4, vertex_distances);
     if (!r.ok()) return to_js_status(r.status);
     val out = ok_object();
     out.set("distance", r.value.distance);
     out.set("diagonal", r.value.diagonal);
     out.set("errorBound", r.value.error_bound);
+    if (vertex_distances) {
+      out.set("aToB", to_js_array("Float64Array", r.value.a_to_b));
+      out.set("bToA", to_js_array("Float64Array", r.value.b_to_a));
+    }
     return out;
   });
 }

@@ -43,7 +43,7 @@ interface CoreModule {
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   step_stencils(mesh: Mesh, options: CoreOptions): RawResult<StencilTable>;
   compare_meshes(reference: Mesh, result: Mesh, relativeTolerance: number): RawResult<MeshComparison>;
-  hausdorff_distance(a: Mesh, b: Mesh): RawResult<HausdorffDistance>;
+  hausdorff_distance(a: Mesh, b: Mesh, vertexDistances: boolean): RawResult<HausdorffDistance>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -277,14 +277,20 @@ export interface HausdorffDistance {
   diagonal: number;
   /** `distance` is within this of the true distance (1e-4 of the diagonal). */
   errorBound: number;
+  /** With `vertexDistances`: each vertex of `a` its distance to the surface of `b`, and of `b` to `a`. */
+  aToB?: Float64Array;
+  bToA?: Float64Array;
 }
 
 /**
  * The symmetric Hausdorff distance between `a` and `b` (CGAL's bounded-error
- * algorithm on both triangulated): how far apart two schemes' surfaces are.
+ * algorithm on both triangulated): how far apart two schemes' surfaces are;
+ * with `vertexDistances`, also how far each vertex is from the other surface.
  */
-export function hausdorffDistance(a: Mesh, b: Mesh): HausdorffDistance {
-  const { ok: _ok, ...h } = unwrap(module().hausdorff_distance(a, b)) as HausdorffDistance & { ok: true };
+export function hausdorffDistance(a: Mesh, b: Mesh, vertexDistances = false): HausdorffDistance {
+  const { ok: _ok, ...h } = unwrap(module().hausdorff_distance(a, b, vertexDistances)) as HausdorffDistance & {
+    ok: true;
+  };
   return h;
 }
 

@@ -11,6 +11,7 @@ import {
   checkRules,
   compareMeshes,
   exportMeshChunks,
+  hausdorffDistance,
   init,
   parseForView,
   parseMesh,
@@ -175,6 +176,11 @@ const handlers: Handlers = {
     await init();
     const comparison = compareMeshes(keptLevel(handle).mesh, parseMesh(text, format), tolerance);
     return { value: comparison, transfer: [comparison.matched.buffer, comparison.errors.buffer] };
+  },
+  async hausdorff({ a, b }) {
+    await init();
+    const h = hausdorffDistance(keptLevel(a).mesh, keptLevel(b).mesh, true);
+    return { value: h, transfer: [h.aToB, h.bToA].flatMap((d) => (d ? [d.buffer] : [])) };
   },
   async predict({ handle, options }) {
     await init();

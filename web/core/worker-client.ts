@@ -13,6 +13,7 @@ import type { MeshComparison } from './compare';
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
+import type { HausdorffDistance } from './subdiv-core';
 import { SubdivError } from './subdiv-error';
 import workerUrl from './subdiv-worker.ts?worker&url';
 import type {
@@ -319,6 +320,11 @@ export class CoreSession {
   }
 
   /** Parses `text` (a result from elsewhere) and checks it against the kept level `handle`. */
+  /** The symmetric Hausdorff distance between kept levels `a` and `b` (either session's), with vertex distances. */
+  hausdorff(a: LevelHandle, b: LevelHandle): Promise<HausdorffDistance> {
+    return this.client.request(this, 'hausdorff', { a, b });
+  }
+
   compare(handle: LevelHandle, text: string, format: MeshFormat, tolerance: number): Promise<MeshComparison> {
     return this.client.request(this, 'compare', { handle, text, format, tolerance });
   }

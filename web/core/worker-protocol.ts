@@ -10,6 +10,7 @@ import type { MeshComparison } from './compare';
 import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
+import type { HausdorffDistance } from './subdiv-core';
 import type { SubdivErrorCode } from './subdiv-error';
 
 /**
@@ -63,6 +64,8 @@ export interface WorkerRequests {
     args: { handle: LevelHandle; text: string; format: MeshFormat; tolerance: number };
     result: MeshComparison;
   };
+  /** The symmetric Hausdorff distance between two kept levels, with each vertex's distance to the other surface. */
+  hausdorff: { args: { a: LevelHandle; b: LevelHandle }; result: HausdorffDistance };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */
