@@ -29,7 +29,7 @@ export class SubdivLabPage {
   }
 
   get canvas(): Locator {
-    return this.page.locator('canvas.subdiv-canvas');
+    return this.page.locator('[data-testid="viewer"] canvas.subdiv-canvas');
   }
 
   get errorBanner(): Locator {

@@ -13,6 +13,7 @@ import { CreaseEditor } from '../edit/crease-editor';
 import { nextRenderMode } from '../render/render-mode';
 import { BasisView } from '../teach/basis-view';
 import { ResultCheck } from '../teach/result-check';
+import { SideBySide } from '../teach/side-by-side';
 import { SplitSmooth } from '../teach/split-smooth';
 import { StencilInspector } from '../teach/stencil-inspector';
 import { BasisPanel } from '../ui/basis-panel';
@@ -29,11 +30,13 @@ import { FactsPanel } from '../ui/facts-panel';
 import { createGallery } from '../ui/gallery';
 import { LevelPanel } from '../ui/level-panel';
 import { NoticeBar } from '../ui/notice-bar';
+import { PaneGrid } from '../ui/pane-grid';
 import { ProgressOverlay } from '../ui/progress-overlay';
 import { RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { SharePanel } from '../ui/share-panel';
 import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
+import { SidePanel } from '../ui/side-panel';
 import { SplitPanel } from '../ui/split-panel';
 import { StencilPanel } from '../ui/stencil-panel';
 import { handleViewKey } from '../ui/view-keys';
@@ -72,6 +75,9 @@ export class AppShell {
   private readonly basisPanel: BasisPanel;
   private readonly split: SplitSmooth;
   private readonly splitPanel: SplitPanel;
+  private readonly sideBySide: SideBySide;
+  private readonly sidePanel: SidePanel;
+  private readonly paneGrid: PaneGrid;
   private readonly resultCheck: ResultCheck;
   private readonly checkPanel: CheckPanel;
   private readonly facts = new FactsPanel();
@@ -171,6 +177,38 @@ export class AppShell {
     });
     this.split.onChange((state) => this.splitPanel.update(state));
     this.splitPanel.update(this.split.state);
+    this.paneGrid = new PaneGrid(stage, {
+      onScheme: (index, scheme) => this.sideBySide.setScheme(index, scheme),
+      onStep: (index, delta) => this.sideBySide.step(index, delta),
+      onKey: (index, event) => {
+        const viewer = this.sideBySide.viewer(index);
+        if (viewer) handleViewKey(viewer.view, event);
+      },
+    });
+    this.sideBySide = new SideBySide(
+      this.viewer,
+      {
+        addPane: (index) => {
+          const pane: SubdivViewer = new SubdivViewer(this.paneGrid.add(index), {
+            confirmLargeStep: (info) => this.confirmLargeStep(info, pane.state.scheme),
+          });
+          return pane;
+        },
+        removePane: (index) => this.paneGrid.remove(index),
+      },
+      (error) => this.modelError(error),
+    );
+    this.sidePanel = new SidePanel({
+      onCount: (count) => this.sideBySide.setCount(count),
+      onTogether: (together) => this.sideBySide.setTogether(together),
+      onPair: (a, b) => this.sideBySide.setPair(a, b),
+      onColours: (on) => this.sideBySide.setColours(on),
+    });
+    this.sideBySide.onChange((state) => {
+      this.sidePanel.update(state, this.viewer.state.levelCount > 0);
+      this.paneGrid.update(state);
+    });
+    this.sidePanel.update(this.sideBySide.state, false);
     this.resultCheck = new ResultCheck(
       this.viewer,
       (level) => this.reachLevel(level),
@@ -269,11 +307,12 @@ export class AppShell {
       this.stencilPanel.element,
       this.basisPanel.element,
       this.splitPanel.element,
+      this.sidePanel.element,
       this.checkPanel.element,
       this.display.element,
       shortcutsHelp(),
     );
-    const main = el('main', { className: 'app-main' }, this.errors.element, this.notice.element, stage);
+    const main = el('main', { className: 'app-main' }, this.errors.element, this.notice.element, this.paneGrid.element);
     const dropZone = new DropZone(document, (file) => void this.openFile(file));
     root.replaceChildren(
       header,
@@ -369,6 +408,37 @@ export class AppShell {
         if (!at) return null;
         const rect = this.viewer.view.canvas.getBoundingClientRect();
         return { x: rect.left + at.x, y: rect.top + at.y };
+      },
+      sideBySide: () => {
+        const s = this.sideBySide.state;
+        const d = s.distance;
+        const farthest = (values: Float64Array | undefined) =>
+          (values ?? new Float64Array(0)).reduce((m, x) => Math.max(m, x), 0);
+        return {
+          count: s.count,
+          together: s.together,
+          panes: s.panes.map((p, i) => ({
+            scheme: p.scheme,
+            level: p.viewer.level,
+            levelCount: p.viewer.levelCount,
+            faces: p.viewer.facts?.faces ?? null,
+            busy: p.viewer.busy !== null,
+            message: p.message,
+            view: (this.sideBySide.viewer(i) ?? this.viewer).getView(),
+          })),
+          distance: d
+            ? {
+                panes: d.panes,
+                levels: d.levels,
+                distance: d.distance,
+                relative: d.relative,
+                diagonal: d.diagonal,
+                errorBound: d.errorBound,
+                farthest: [farthest(d.aToB), farthest(d.bToA)],
+              }
+            : null,
+          measuring: s.measuring,
+        };
       },
     };
   }
@@ -510,9 +580,9 @@ export class AppShell {
     return this.viewer.state.level === level;
   }
 
-  private confirmLargeStep(info: LargeStepInfo): Promise<boolean> {
+  private confirmLargeStep(info: LargeStepInfo, scheme = this.viewer.state.scheme): Promise<boolean> {
     const p = info.prediction;
-    const label = schemeInfo(this.viewer.state.scheme).label;
+    const label = schemeInfo(scheme).label;
     return this.confirm.ask(
       `Level ${info.level} is large`,
       `${label} level ${info.level} would have ${p.vertices.toLocaleString('en')} vertices and ` +

@@ -50,6 +50,33 @@ export interface SubdivLabTestState {
   drawn: DrawnLevel | null;
 }
 
+/** The side-by-side panes as a test reads them. */
+export interface SideBySideTestState {
+  count: number;
+  together: boolean;
+  panes: {
+    scheme: string;
+    level: number;
+    levelCount: number;
+    faces: number | null;
+    busy: boolean;
+    message: string;
+    view: ViewState;
+  }[];
+  /** The last distance measured: the panes and levels, the figures. */
+  distance: {
+    panes: [number, number];
+    levels: [number, number];
+    distance: number;
+    relative: number;
+    diagonal: number;
+    errorBound: number;
+    /** The largest vertex distance of each pane to the other surface. */
+    farthest: [number, number];
+  } | null;
+  measuring: boolean;
+}
+
 export interface SubdivLabTestApi {
   state(): SubdivLabTestState;
   /** Lowers the budget over which a step asks first (to test the question with small meshes). */
@@ -65,6 +92,8 @@ export interface SubdivLabTestApi {
    * pixels, so a test can click it or an edge; null: not in view.
    */
   vertexOnScreen(v: number, shown?: boolean): { x: number; y: number } | null;
+  /** The side-by-side panes, their levels and the distance measured. */
+  sideBySide(): SideBySideTestState;
 }
 
 declare global {

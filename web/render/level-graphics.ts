@@ -63,6 +63,22 @@ export function influenceColor(t: number): Color {
   return new Color(INFLUENCE_STOPS[i]).lerp(new Color(INFLUENCE_STOPS[i + 1]), x - i);
 }
 
+/**
+ * Per-vertex colours (three numbers in 0..1 a vertex, as setLevelColors
+ * takes them) of `values` on the influence scale, `min` dark and `max`
+ * yellow.
+ */
+export function influenceColors(values: ArrayLike<number>, min: number, max: number): Float32Array {
+  const rgb = new Float32Array(3 * values.length);
+  for (let v = 0; v < values.length; ++v) {
+    const c = influenceColor(max > min ? (values[v] - min) / (max - min) : 0);
+    rgb[3 * v] = c.r;
+    rgb[3 * v + 1] = c.g;
+    rgb[3 * v + 2] = c.b;
+  }
+  return rgb;
+}
+
 /** The points `vertices` of a level, with the colour of its item's sharpness for each (`per` points an item). */
 function coloredPoints(positions: Float32Array, vertices: ArrayLike<number>, sharpness: ArrayLike<number>, per: 1 | 2) {
   const xyz = new Float32Array(3 * vertices.length);

@@ -7,7 +7,7 @@
  * at an extraordinary vertex or on a border. Another level is coloured
  * again as it is shown.
  */
-import { influenceColor } from '../render/level-graphics';
+import { influenceColors } from '../render/level-graphics';
 import type { ViewClick } from '../render/scene-view';
 import type { SubdivViewer } from '../viewer/subdiv-viewer';
 
@@ -131,11 +131,7 @@ export class BasisView {
         min = Math.min(min, x);
         if (Math.abs(x) > NONE) reached++;
       }
-      const rgb = new Float32Array(3 * values.length);
-      for (let v = 0; v < values.length; ++v) {
-        const c = influenceColor(max > min ? (values[v] - min) / (max - min) : 0);
-        rgb.set([c.r, c.g, c.b], 3 * v);
-      }
+      const rgb = influenceColors(values, min, max);
       if (this.colouredLevel !== level) this.viewer.setLevelColors(this.colouredLevel, null);
       this.viewer.setLevelColors(level, rgb);
       this.colouredLevel = level;

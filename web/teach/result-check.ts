@@ -8,7 +8,7 @@
  */
 import type { MeshComparison } from '../core/compare';
 import type { MeshFormat } from '../core/mesh';
-import { influenceColor } from '../render/level-graphics';
+import { influenceColors } from '../render/level-graphics';
 import type { SubdivViewer } from '../viewer/subdiv-viewer';
 
 export interface CheckedResult {
@@ -82,12 +82,7 @@ export class ResultCheck {
     const count = this.viewer.buffersOf(level)?.positions.length ?? 0;
     const worst = new Float64Array(count / 3);
     for (let v = 0; v < c.errors.length; ++v) worst[c.matched[v]] = Math.max(worst[c.matched[v]], c.errors[v]);
-    const rgb = new Float32Array(count);
-    for (let v = 0; v < worst.length; ++v) {
-      const colour = influenceColor(c.maxError > 0 ? worst[v] / c.maxError : 0);
-      rgb.set([colour.r, colour.g, colour.b], 3 * v);
-    }
-    this.viewer.setLevelColors(level, rgb);
+    this.viewer.setLevelColors(level, influenceColors(worst, 0, c.maxError));
   }
 
   private emit(): void {

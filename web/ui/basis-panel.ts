@@ -3,8 +3,8 @@
  * number from the keyboard, and shows the colour bar of its influence with
  * the largest weight and how many of the level's vertices it reaches.
  */
-import { INFLUENCE_STOPS } from '../render/level-graphics';
 import type { BasisState } from '../teach/basis-view';
+import { colourBar } from './colour-bar';
 import { button, el, section, vertexField } from './dom';
 
 export interface BasisPanelHandlers {
@@ -35,21 +35,11 @@ export class BasisPanel {
     const field = vertexField('Control vertex', 'basis.vertex', handlers.onVertex);
     this.vertex = field.input;
     this.row = field.row;
-    this.low = el('span', { testId: 'basis.low' });
-    this.high = el('span', { testId: 'basis.high' });
-    const bar = el('div', {
-      className: 'colour-bar',
-      attrs: { role: 'img', 'aria-label': 'colour bar: no influence (dark) to the largest (yellow)' },
-    });
-    bar.style.background = `linear-gradient(to right, ${INFLUENCE_STOPS.join(', ')})`;
+    const bar = colourBar('colour bar: no influence (dark) to the largest (yellow)', 'basis');
+    this.low = bar.low;
+    this.high = bar.high;
     this.reach = el('p', { testId: 'basis.reach' });
-    this.legend = el(
-      'div',
-      { testId: 'basis.legend' },
-      bar,
-      el('div', { className: 'row colour-bar-labels' }, this.low, this.high),
-      this.reach,
-    );
+    this.legend = el('div', { testId: 'basis.legend' }, bar.element, this.reach);
     this.element = section('Basis function', 'basis-panel', this.toggle, this.message, this.row, this.legend);
   }
 

@@ -27,6 +27,7 @@ import type {
 } from '../core/mesh';
 import type { RuleHost } from '../core/rule-set';
 import type { StencilTable } from '../core/stencils';
+import type { HausdorffDistance } from '../core/subdiv-core';
 import {
   CancelledError,
   type CoreSession,
@@ -583,6 +584,19 @@ export class SubdivViewer {
     if (!this.levels[k]) return null;
     return this.computing(`Checking the result against level ${k}…`, () =>
       this.withHandle(k, (h) => this.core.compare(h, text, format, tolerance)),
+    );
+  }
+
+  /**
+   * The symmetric Hausdorff distance between this viewer's shown level and
+   * `other`'s (both kept by the page's one worker), with each vertex's
+   * distance to the other surface. Null when either has no model.
+   */
+  async distanceTo(other: SubdivViewer): Promise<HausdorffDistance | null> {
+    if (!this.levels[this.current] || !other.levels[other.current]) return null;
+    const k = other.current;
+    return this.computing('Measuring the distance between the surfaces…', () =>
+      this.withHandle(this.current, (a) => other.withHandle(k, (b) => this.core.hausdorff(a, b))),
     );
   }
 

@@ -1,0 +1,137 @@
+/**
+ * Side by side: Catmull-Clark and Loop on the cube in two panes, levels
+ * together, cameras linked; the symmetric Hausdorff distance shown is the
+ * one `subdiv compare` prints for the same two levels (written by
+ * `subdiv -o`), and both surfaces are coloured by it; levels apart; back to
+ * one view, the picture is the plain one again.
+ */
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import type { SideBySideTestState } from '../../web/app/test-api';
+import { expect, test } from './fixtures';
+
+const CUBE = 'public/meshes/cube.off';
+
+/** Runs the `subdiv` CLI; its standard output. */
+function subdiv(args: string[]): string {
+  const r = spawnSync(process.execPath, ['bin/subdiv.mjs', ...args], { encoding: 'utf8' });
+  expect(r.stderr).toBe('');
+  expect(r.status).toBe(0);
+  return r.stdout;
+}
+
+/** `subdiv compare` of the cube's level `levels` under the two schemes. */
+function cliDistance(levels: [number, number]): { distance: number; relative: number; errorBound: number } {
+  const work = mkdtempSync(join(tmpdir(), 'side-by-side-'));
+  const cc = join(work, 'cc.off');
+  const loop = join(work, 'loop.off');
+  subdiv([CUBE, '--scheme', 'catmull-clark', '--levels', String(levels[0]), '-o', cc]);
+  subdiv([CUBE, '--scheme', 'loop', '--triangulate', '--levels', String(levels[1]), '-o', loop]);
+  return JSON.parse(subdiv(['compare', cc, loop]));
+}
+
+test('Catmull-Clark beside Loop on the cube: linked panes, levels together and apart, the Hausdorff distance of the CLI', async ({
+  app,
+}) => {
+  await app.open();
+  await app.openSample('cube', 'cube.off');
+  await app.subdivide();
+  await app.subdivide();
+  // One view as it is drawn before side by side, to compare with after it.
+  await app.byTestId('view.save').click();
+  const single = await app.canvasPixels();
+  const side = () => app.page.evaluate(() => window.__subdivlab?.sideBySide() as SideBySideTestState);
+  const measured = async (levels: [number, number]) => {
+    await expect
+      .poll(async () => {
+        const s = await side();
+        return s.measuring || !s.distance ? null : s.distance.levels;
+      })
+      .toEqual(levels);
+    return (await side()).distance as NonNullable<SideBySideTestState['distance']>;
+  };
+
+  await test.step('two panes: Loop beside Catmull-Clark, at the same level', async () => {
+    await app.byTestId('side.count').selectOption('2');
+    await expect(app.byTestId('pane.1.view').locator('canvas')).toBeVisible();
+    await expect(app.byTestId('pane.1.scheme')).toHaveValue('loop');
+    await expect(app.byTestId('pane.0.level')).toHaveText('level 2 · 98 vertices · 96 quads');
+    // The cube's 6 quads split into 12 triangles first, then 4 each per step.
+    await expect(app.byTestId('pane.1.level')).toHaveText('level 2 · 98 vertices · 192 triangles · triangulated first');
+  });
+
+  await test.step('the distance is the CLI’s, and both surfaces are coloured by it', async () => {
+    const d = await measured([2, 2]);
+    const cli = cliDistance([2, 2]);
+    expect(Math.abs(d.distance - cli.distance)).toBeLessThanOrEqual(d.errorBound + cli.errorBound);
+    expect(d.relative).toBeCloseTo(d.distance / d.diagonal, 15);
+    // The cube (side 2, centred) and its levels: the diagonal of both is at most 2√3.
+    expect(d.diagonal).toBeLessThanOrEqual(2 * Math.sqrt(3) + 1e-12);
+    // No vertex is farther from the other surface than the Hausdorff distance.
+    for (const far of d.farthest) expect(far).toBeLessThanOrEqual(d.distance + d.errorBound);
+    expect(Math.max(...d.farthest)).toBeGreaterThan(0.5 * d.distance);
+    const percent = (100 * d.relative).toPrecision(3);
+    await expect(app.byTestId('side.distance')).toContainText(
+      `Hausdorff distance between Catmull-Clark level 2 and Loop level 2: ${d.distance.toPrecision(4)}, ${percent} % of the diagonal`,
+    );
+    await expect(app.byTestId('side.legend')).toBeVisible();
+    await expect(app.byTestId('side.high')).toHaveText(d.distance.toPrecision(4));
+    const coloured = await app.canvasPixels();
+    await app.byTestId('side.colours').uncheck();
+    await expect.poll(async () => (await app.canvasPixels()).equals(coloured)).toBe(false);
+    const plain = await app.canvasPixels();
+    await app.byTestId('side.colours').check();
+    await expect.poll(async () => (await app.canvasPixels()).equals(plain)).toBe(false);
+    await app.snapshot('side-by-side-cc-loop');
+  });
+
+  await test.step('the cameras are linked: turning pane 2 turns pane 1', async () => {
+    const before = (await side()).panes[0].view;
+    const box = await app.byTestId('pane.1.view').boundingBox();
+    if (!box) throw new Error('pane 2 has no box');
+    await app.page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await app.page.mouse.down();
+    await app.page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 + 20, { steps: 5 });
+    await app.page.mouse.up();
+    const after = await side();
+    expect(after.panes[0].view.position).not.toEqual(before.position);
+    for (let i = 0; i < 3; ++i) expect(after.panes[0].view.position[i]).toBeCloseTo(after.panes[1].view.position[i], 9);
+  });
+
+  await test.step('levels together: Subdivide steps both panes', async () => {
+    await app.subdivide();
+    await expect.poll(async () => (await side()).panes[1].level).toBe(3);
+    await expect(app.byTestId('pane.1.level')).toHaveText(
+      'level 3 · 386 vertices · 768 triangles · triangulated first',
+    );
+    const d = await measured([3, 3]);
+    const cli = cliDistance([3, 3]);
+    expect(Math.abs(d.distance - cli.distance)).toBeLessThanOrEqual(d.errorBound + cli.errorBound);
+  });
+
+  await test.step('levels apart: pane 2 goes down alone', async () => {
+    await app.byTestId('side.together').uncheck();
+    await app.byTestId('pane.1.down').click();
+    await expect.poll(async () => (await side()).panes.map((p) => p.level)).toEqual([3, 2]);
+    const d = await measured([3, 2]);
+    const cli = cliDistance([3, 2]);
+    expect(Math.abs(d.distance - cli.distance)).toBeLessThanOrEqual(d.errorBound + cli.errorBound);
+    // Stepping the first pane leaves the second where it is.
+    await app.scrubTo(2);
+    await expect.poll(async () => (await side()).panes.map((p) => p.level)).toEqual([2, 2]);
+    await app.scrubTo(1);
+    expect((await side()).panes[1].level).toBe(2);
+  });
+
+  await test.step('back to one view: no pane, no colours', async () => {
+    await app.scrubTo(2);
+    await app.byTestId('side.count').selectOption('1');
+    await expect(app.byTestId('pane.1')).toHaveCount(0);
+    expect((await side()).count).toBe(1);
+    // From the same viewpoint, the one view is drawn as before: no distance colours are left.
+    await app.byTestId('view.restore').click();
+    await expect.poll(async () => (await app.canvasPixels()).equals(single)).toBe(true);
+  });
+});

@@ -1,0 +1,437 @@
+/**
+ * Side by side: two to four panes on one control mesh, each with its own
+ * scheme, so that a student compares Loop with √3 or Catmull-Clark with
+ * quad-triangle on the same input. The first pane is the page's own
+ * viewer; the others follow its model. Cameras are linked; levels are
+ * stepped together (every pane shows the first pane's level) or apart
+ * (each its own). The symmetric Hausdorff distance between two panes'
+ * shown surfaces (CGAL's bounded-error algorithm, in the worker) is given
+ * relative to the bounding-box diagonal, and both surfaces are coloured by
+ * each vertex's distance to the other one.
+ */
+import type { Mesh, SchemeName } from '../core/mesh';
+import type { HausdorffDistance } from '../core/subdiv-core';
+import { CancelledError } from '../core/worker-client';
+import { influenceColors } from '../render/level-graphics';
+import type { ViewState } from '../render/view-state';
+import { messageOf } from '../viewer/error-message';
+import { schemeInfo } from '../viewer/scheme-info';
+import type { SubdivViewer, ViewerState } from '../viewer/subdiv-viewer';
+
+/** At most this many panes. */
+export const MAX_PANES = 4;
+
+/** Schemes a pane offers (the custom scheme needs the rules panel, which belongs to the first pane). */
+export const PANE_SCHEMES: readonly SchemeName[] = [
+  'catmull-clark',
+  'loop',
+  'sqrt3',
+  'doo-sabin',
+  'quad-triangle',
+  'linear',
+  'linear-tri',
+];
+
+/** What a new pane shows beside a scheme: its classic comparison first, then the others in order. */
+const COMPANIONS: Partial<Record<SchemeName, SchemeName[]>> = {
+  'catmull-clark': ['loop', 'quad-triangle', 'doo-sabin'],
+  loop: ['sqrt3', 'catmull-clark', 'quad-triangle'],
+  sqrt3: ['loop', 'catmull-clark'],
+  'doo-sabin': ['catmull-clark', 'loop'],
+  'quad-triangle': ['catmull-clark', 'loop'],
+};
+
+/** The place of the extra panes in the page: a viewer in pane `index` (1 or more), and its removal. */
+export interface PaneHost {
+  addPane(index: number): SubdivViewer;
+  removePane(index: number): void;
+}
+
+export interface PaneState {
+  scheme: SchemeName;
+  /** The scheme needs triangles: the pane triangulates the control mesh first. */
+  triangulated: boolean;
+  viewer: ViewerState;
+  /** Why the pane does not show the level asked for (a step failed). */
+  message: string;
+}
+
+export interface MeasuredDistance extends HausdorffDistance {
+  /** The two panes measured and the levels they showed. */
+  panes: [number, number];
+  levels: [number, number];
+  /** `distance` as a share of the diagonal. */
+  relative: number;
+}
+
+export interface SideBySideState {
+  /** 1: side by side is off. */
+  count: number;
+  together: boolean;
+  panes: PaneState[];
+  /** The two panes whose distance is measured (indices into panes). */
+  pair: [number, number];
+  colours: boolean;
+  distance: MeasuredDistance | null;
+  measuring: boolean;
+  message: string;
+}
+
+interface ExtraPane {
+  viewer: SubdivViewer;
+  scheme: SchemeName;
+  /** The level this pane aims at (levels apart), and why it could not get there. */
+  target: number;
+  message: string;
+  /** A model is being loaded into the pane: its own fit of the camera is not passed on. */
+  loading: boolean;
+  /** A pass bringing it to its target runs. */
+  reaching: Promise<void> | null;
+  again: boolean;
+  unsubscribe: (() => void)[];
+}
+
+export class SideBySide {
+  private readonly extra: ExtraPane[] = [];
+  private together = true;
+  private pair: [number, number] = [0, 1];
+  private colours = true;
+  private distance: MeasuredDistance | null = null;
+  private measuring = false;
+  private message = '';
+  /** The control mesh the panes show (the first pane's). */
+  private model: Mesh | null = null;
+  /** A camera change is being passed on: the panes it reaches do not pass it back. */
+  private linking = false;
+  /** Counts measurements, so that a late one for levels no longer shown is dropped. */
+  private asked = 0;
+  /** The level ids (viewer.levelId) the distance and colours are of. */
+  private measuredIds = '';
+  /** Panes (index, level) coloured by the distance. */
+  private coloured: { pane: number; level: number }[] = [];
+  private readonly listeners = new Set<(state: SideBySideState) => void>();
+
+  /** `onError` hears of failures outside a pane's steps (a distance the core could not measure). */
+  constructor(
+    private readonly main: SubdivViewer,
+    private readonly host: PaneHost,
+    private readonly onError: (error: unknown) => void,
+  ) {
+    main.onChange(() => this.mainChanged());
+    main.onViewChange((view) => this.passView(main, view));
+  }
+
+  get state(): SideBySideState {
+    const main = this.main.state;
+    return {
+      count: 1 + this.extra.length,
+      together: this.together,
+      panes: [
+        { scheme: main.scheme, triangulated: main.triangulate, viewer: main, message: '' },
+        ...this.extra.map((p) => ({
+          scheme: p.scheme,
+          triangulated: schemeInfo(p.scheme).needsTriangles,
+          viewer: p.viewer.state,
+          message: p.message,
+        })),
+      ],
+      pair: [...this.pair],
+      colours: this.colours,
+      distance: this.distance,
+      measuring: this.measuring,
+      message: this.message,
+    };
+  }
+
+  onChange(listener: (state: SideBySideState) => void): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  /** The viewer of pane `index` (0: the page's own). */
+  viewer(index: number): SubdivViewer | null {
+    return index === 0 ? this.main : (this.extra[index - 1]?.viewer ?? null);
+  }
+
+  /** Shows `count` panes (1 turns side by side off); new ones get a scheme the others do not show. */
+  setCount(count: number): void {
+    const n = Math.min(Math.max(Math.round(count), 1), MAX_PANES);
+    while (1 + this.extra.length > n) this.removeLast();
+    while (1 + this.extra.length < n) this.addPane();
+    this.pair = [Math.min(this.pair[0], n - 1), Math.min(this.pair[1], n - 1)];
+    if (this.pair[0] === this.pair[1]) this.pair = [0, n > 1 ? 1 : 0];
+    this.remeasure();
+    this.emit();
+  }
+
+  /** Pane `index` (1 or more) shows `scheme`: its levels are computed again up to the level it showed. */
+  setScheme(index: number, scheme: SchemeName): void {
+    const pane = this.extra[index - 1];
+    if (!pane || pane.scheme === scheme) return;
+    pane.scheme = scheme;
+    pane.message = '';
+    pane.viewer.setScheme(scheme);
+    pane.viewer.setTriangulate(schemeInfo(scheme).needsTriangles);
+    void this.reach(pane);
+    this.emit();
+  }
+
+  /** Levels stepped together (every pane at the first pane's level) or apart. */
+  setTogether(together: boolean): void {
+    this.together = together;
+    if (together) for (const pane of this.extra) void this.reach(pane);
+    this.emit();
+  }
+
+  /** Pane `index` (levels apart; 0 is the page's own) one level up or down; up computes it when needed. */
+  step(index: number, delta: number): void {
+    const pane = this.extra[index - 1];
+    if (!pane) return;
+    pane.target = Math.max(0, pane.viewer.state.level + delta);
+    void this.reach(pane);
+  }
+
+  /** Measures the distance between panes `a` and `b`. */
+  setPair(a: number, b: number): void {
+    const count = 1 + this.extra.length;
+    if (a === b || a < 0 || b < 0 || a >= count || b >= count) return;
+    this.pair = [a, b];
+    this.remeasure();
+  }
+
+  /** Colours the measured panes by each vertex's distance to the other surface, or not. */
+  setColours(on: boolean): void {
+    this.colours = on;
+    if (on) {
+      this.remeasure();
+    } else {
+      this.clearColours();
+      this.measuredIds = '';
+    }
+    this.emit();
+  }
+
+  private addPane(): void {
+    const index = 1 + this.extra.length;
+    const used = new Set([this.main.state.scheme, ...this.extra.map((p) => p.scheme)]);
+    const preferred = COMPANIONS[this.main.state.scheme] ?? [];
+    const scheme = [...preferred, ...PANE_SCHEMES].find((s) => !used.has(s)) ?? 'loop';
+    const viewer = this.host.addPane(index);
+    viewer.setScheme(scheme);
+    viewer.setTriangulate(schemeInfo(scheme).needsTriangles);
+    viewer.setRenderMode(this.main.state.renderMode);
+    const pane: ExtraPane = {
+      viewer,
+      scheme,
+      target: this.main.state.level,
+      message: '',
+      loading: false,
+      reaching: null,
+      again: false,
+      unsubscribe: [],
+    };
+    pane.unsubscribe.push(
+      viewer.onChange(() => {
+        this.remeasure();
+        this.emit();
+      }),
+      viewer.onViewChange((view) => {
+        if (!pane.loading) this.passView(viewer, view);
+      }),
+    );
+    this.extra.push(pane);
+    if (this.model) void this.loadInto(pane, this.model);
+  }
+
+  private removeLast(): void {
+    const pane = this.extra.pop();
+    if (!pane) return;
+    for (const stop of pane.unsubscribe) stop();
+    this.coloured = this.coloured.filter((c) => c.pane !== this.extra.length + 1);
+    pane.viewer.dispose();
+    this.host.removePane(this.extra.length + 1);
+  }
+
+  private mainChanged(): void {
+    const main = this.main.state;
+    const model = this.main.controlMesh;
+    if (model !== this.model) {
+      this.model = model;
+      this.distance = null;
+      this.coloured = [];
+      if (model) for (const pane of this.extra) void this.loadInto(pane, model);
+    } else if (this.together && !main.busy) {
+      for (const pane of this.extra) if (pane.viewer.state.level !== main.level) void this.reach(pane);
+    }
+    for (const pane of this.extra)
+      if (pane.viewer.state.renderMode !== main.renderMode) pane.viewer.setRenderMode(main.renderMode);
+    this.remeasure();
+    this.emit();
+  }
+
+  /** Shows `model` (the first pane's control mesh) in `pane`, then its level; the camera stays the first pane's. */
+  private async loadInto(pane: ExtraPane, model: Mesh): Promise<void> {
+    pane.loading = true;
+    pane.message = '';
+    try {
+      await pane.viewer.load(model, this.main.state.modelName ?? 'mesh');
+    } catch (error) {
+      if (!(error instanceof CancelledError)) pane.message = `Could not show the model: ${messageOf(error)}`;
+      this.emit();
+      return;
+    } finally {
+      pane.loading = false;
+    }
+    if (this.model !== model) return;
+    this.linkCamera(pane.viewer);
+    await this.reach(pane);
+  }
+
+  /** Brings `pane` to its level (the first pane's when together), one step at a time; a step that fails is named in the pane. */
+  private reach(pane: ExtraPane): Promise<void> {
+    if (pane.reaching) {
+      pane.again = true;
+      return pane.reaching;
+    }
+    pane.reaching = (async () => {
+      try {
+        do {
+          pane.again = false;
+          const viewer = pane.viewer;
+          const target = this.together ? this.main.state.level : pane.target;
+          if (viewer.state.levelCount === 0) return;
+          while (viewer.state.levelCount <= target && !pane.again) {
+            try {
+              if (viewer.state.busy) {
+                // A measurement (or a load) runs in this pane: step once it is done.
+                await idle(viewer);
+                continue;
+              }
+              if (!(await viewer.subdivide())) {
+                pane.message = `Level ${viewer.state.levelCount} was not computed: it is larger than this tab should hold.`;
+                break;
+              }
+            } catch (error) {
+              if (!(error instanceof CancelledError)) pane.message = messageOf(error);
+              pane.target = viewer.state.level;
+              this.emit();
+              return;
+            }
+          }
+          if (pane.again) continue;
+          viewer.setLevel(Math.min(target, viewer.state.levelCount - 1));
+          pane.target = viewer.state.level;
+          if (viewer.state.level === target) pane.message = '';
+        } while (pane.again);
+      } finally {
+        pane.reaching = null;
+        this.emit();
+      }
+    })();
+    return pane.reaching;
+  }
+
+  /** Passes the camera of `from` on to every other pane. */
+  private passView(from: SubdivViewer, view: ViewState): void {
+    if (this.linking || this.extra.length === 0) return;
+    this.linking = true;
+    try {
+      for (const viewer of this.viewers()) if (viewer !== from) viewer.setView(view);
+    } finally {
+      this.linking = false;
+    }
+  }
+
+  private linkCamera(viewer: SubdivViewer): void {
+    this.linking = true;
+    try {
+      viewer.setView(this.main.getView());
+    } finally {
+      this.linking = false;
+    }
+  }
+
+  private viewers(): SubdivViewer[] {
+    return [this.main, ...this.extra.map((p) => p.viewer)];
+  }
+
+  /** Measures the pair again when the levels they show changed and neither is busy. */
+  private remeasure(): void {
+    if (this.extra.length === 0) {
+      if (this.distance || this.coloured.length > 0) {
+        this.clearColours();
+        this.distance = null;
+        this.measuredIds = '';
+      }
+      return;
+    }
+    const [a, b] = this.pair.map((i) => this.viewer(i));
+    if (!a || !b) return;
+    const ids = `${this.pair.join(',')}:${a.levelId()},${b.levelId()}`;
+    if (ids === this.measuredIds) return;
+    if (a.state.busy || b.state.busy || a.levelId() === 0 || b.levelId() === 0) return;
+    if (this.measuring) {
+      // Asked again once the running measurement ends.
+      this.measuredIds = '';
+      return;
+    }
+    this.measuredIds = ids;
+    void this.measure(a, b);
+  }
+
+  private async measure(a: SubdivViewer, b: SubdivViewer): Promise<void> {
+    const asked = ++this.asked;
+    const pair: [number, number] = [...this.pair];
+    const levels: [number, number] = [a.state.level, b.state.level];
+    const ids = [a.levelId(), b.levelId()];
+    this.measuring = true;
+    this.emit();
+    try {
+      const h = await a.distanceTo(b);
+      if (asked !== this.asked || !h || a.levelId() !== ids[0] || b.levelId() !== ids[1]) return;
+      this.distance = { ...h, panes: pair, levels, relative: h.diagonal > 0 ? h.distance / h.diagonal : 0 };
+      this.message = '';
+      this.clearColours();
+      if (this.colours && h.aToB && h.bToA) {
+        // One scale for both: dark on the other surface, yellow at the Hausdorff distance.
+        const top = Math.max(h.distance, 1e-300);
+        a.setLevelColors(levels[0], influenceColors(h.aToB, 0, top));
+        b.setLevelColors(levels[1], influenceColors(h.bToA, 0, top));
+        this.coloured = [
+          { pane: pair[0], level: levels[0] },
+          { pane: pair[1], level: levels[1] },
+        ];
+      }
+    } catch (error) {
+      if (asked !== this.asked || error instanceof CancelledError) return;
+      this.message = `The distance could not be measured: ${messageOf(error)}`;
+      this.onError(error);
+    } finally {
+      if (asked === this.asked) this.measuring = false;
+      this.emit();
+      if (asked === this.asked) this.remeasure();
+    }
+  }
+
+  private clearColours(): void {
+    for (const { pane, level } of this.coloured) this.viewer(pane)?.setLevelColors(level, null);
+    this.coloured = [];
+  }
+
+  private emit(): void {
+    const state = this.state;
+    for (const listener of this.listeners) listener(state);
+  }
+}
+
+/** Resolves once `viewer` is no longer busy. */
+function idle(viewer: SubdivViewer): Promise<void> {
+  return new Promise((resolve) => {
+    if (!viewer.state.busy) return resolve();
+    const stop = viewer.onChange((state) => {
+      if (state.busy) return;
+      stop();
+      resolve();
+    });
+  });
+}
