@@ -3,7 +3,8 @@
  * together, cameras linked; the symmetric Hausdorff distance shown is the
  * one `subdiv compare` prints for the same two levels (written by
  * `subdiv -o`), and both surfaces are coloured by it; levels apart; back to
- * one view, the picture is the plain one again.
+ * one view, the picture is the plain one again; another model, and the
+ * panes follow it.
  */
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync } from 'node:fs';
@@ -133,5 +134,21 @@ test('Catmull-Clark beside Loop on the cube: linked panes, levels together and a
     // From the same viewpoint, the one view is drawn as before: no distance colours are left.
     await app.byTestId('view.restore').click();
     await expect.poll(async () => (await app.canvasPixels()).equals(single)).toBe(true);
+  });
+
+  await test.step('another model: the panes follow it, levels together again', async () => {
+    await app.byTestId('side.count').selectOption('2');
+    await app.byTestId('side.together').check();
+    await app.openSample('tetrahedron', 'tetrahedron.off');
+    await app.subdivide();
+    await expect
+      .poll(async () => (await side()).panes.map((p) => [p.level, p.faces]))
+      .toEqual([
+        [1, 12],
+        [1, 16],
+      ]);
+    await measured([1, 1]);
+    await app.subdivide();
+    await measured([2, 2]);
   });
 });

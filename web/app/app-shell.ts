@@ -131,7 +131,7 @@ export class AppShell {
     });
     this.firstVisitHint.hidden = true;
     this.viewer = new SubdivViewer(stage, { confirmLargeStep: (info) => this.confirmLargeStep(info) });
-    this.progress = new ProgressOverlay(() => this.viewer.cancel());
+    this.progress = new ProgressOverlay(() => this.cancel());
     this.exportActions = new ExportActions(this.viewer, (source, error) => this.showError(source, error));
     stage.append(this.emptyHint, this.firstVisitHint, this.facts.element, this.progress.element);
 
@@ -338,7 +338,7 @@ export class AppShell {
         fit: () => this.viewer.fitView(),
         stepLevel: (delta) => this.viewer.setLevel(this.viewer.state.level + delta),
         open: () => this.fileInput.click(),
-        cancel: () => this.viewer.cancel(),
+        cancel: () => this.cancel(),
         copyImage: () => void this.exportActions.copyImage(false),
         toggleInspector: () => this.setClickMode(this.inspector.state.inspecting ? null : 'inspect'),
         creases: {
@@ -512,6 +512,12 @@ export class AppShell {
     if (mode === 'creases') this.creaseEditor.setEditing(true);
     if (mode === 'inspect') this.inspector.setInspecting(true);
     if (mode === 'basis') this.basis.setPicking(true);
+  }
+
+  /** Cancel or Esc: the running step or tool request stops, in every pane. */
+  private cancel(): void {
+    this.viewer.cancel();
+    this.sideBySide.cancel();
   }
 
   /** Shows an error about the shown model (a teaching tool's or an edit's request that failed). */

@@ -183,6 +183,14 @@ export class SideBySide {
     this.emit();
   }
 
+  /** Stops the other panes' steps (the levels they reached stay; Cancel in the page stops the first pane's). */
+  cancel(): void {
+    for (const pane of this.extra) {
+      pane.again = false;
+      pane.viewer.cancel();
+    }
+  }
+
   /** Pane `index` (levels apart; 0 is the page's own) one level up or down; up computes it when needed. */
   step(index: number, delta: number): void {
     const pane = this.extra[index - 1];
@@ -293,41 +301,41 @@ export class SideBySide {
       pane.again = true;
       return pane.reaching;
     }
-    pane.reaching = (async () => {
-      try {
-        do {
-          pane.again = false;
-          const viewer = pane.viewer;
-          const target = this.together ? this.main.state.level : pane.target;
-          if (viewer.state.levelCount === 0) return;
-          while (viewer.state.levelCount <= target && !pane.again) {
-            try {
-              if (viewer.state.busy) {
-                // A measurement (or a load) runs in this pane: step once it is done.
-                await idle(viewer);
-                continue;
-              }
-              if (!(await viewer.subdivide())) {
-                pane.message = `Level ${viewer.state.levelCount} was not computed: it is larger than this tab should hold.`;
-                break;
-              }
-            } catch (error) {
-              if (!(error instanceof CancelledError)) pane.message = messageOf(error);
-              pane.target = viewer.state.level;
-              this.emit();
-              return;
+    const run = async () => {
+      do {
+        pane.again = false;
+        const viewer = pane.viewer;
+        const target = this.together ? this.main.state.level : pane.target;
+        if (viewer.state.levelCount === 0) return;
+        while (viewer.state.levelCount <= target && !pane.again) {
+          try {
+            if (viewer.state.busy) {
+              // A measurement (or a load) runs in this pane: step once it is done.
+              await idle(viewer);
+              continue;
             }
+            if (!(await viewer.subdivide())) {
+              pane.message = `Level ${viewer.state.levelCount} was not computed: it is larger than this tab should hold.`;
+              break;
+            }
+          } catch (error) {
+            if (!(error instanceof CancelledError)) pane.message = messageOf(error);
+            pane.target = viewer.state.level;
+            this.emit();
+            return;
           }
-          if (pane.again) continue;
-          viewer.setLevel(Math.min(target, viewer.state.levelCount - 1));
-          pane.target = viewer.state.level;
-          if (viewer.state.level === target) pane.message = '';
-        } while (pane.again);
-      } finally {
-        pane.reaching = null;
-        this.emit();
-      }
-    })();
+        }
+        if (pane.again) continue;
+        viewer.setLevel(Math.min(target, viewer.state.levelCount - 1));
+        pane.target = viewer.state.level;
+        if (viewer.state.level === target) pane.message = '';
+      } while (pane.again);
+    };
+    // Cleared in a callback, which runs after the assignment even when run() ends without waiting.
+    pane.reaching = run().finally(() => {
+      pane.reaching = null;
+      this.emit();
+    });
     return pane.reaching;
   }
 
