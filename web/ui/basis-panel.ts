@@ -3,9 +3,9 @@
  * number from the keyboard, and shows the colour bar of its influence with
  * the largest weight and how many of the level's vertices it reaches.
  */
-import { INFLUENCE_STOPS } from '../render/level-graphics';
 import type { BasisState } from '../teach/basis-view';
 import { button, el, section, vertexField } from './dom';
+import { influenceBar, influenceEnds } from './influence-bar';
 
 export interface BasisPanelHandlers {
   onPicking: (on: boolean) => void;
@@ -37,11 +37,7 @@ export class BasisPanel {
     this.row = field.row;
     this.low = el('span', { testId: 'basis.low' });
     this.high = el('span', { testId: 'basis.high' });
-    const bar = el('div', {
-      className: 'colour-bar',
-      attrs: { role: 'img', 'aria-label': 'colour bar: no influence (dark) to the largest (yellow)' },
-    });
-    bar.style.background = `linear-gradient(to right, ${INFLUENCE_STOPS.join(', ')})`;
+    const bar = influenceBar();
     this.reach = el('p', { testId: 'basis.reach' });
     this.legend = el(
       'div',
@@ -65,8 +61,7 @@ export class BasisPanel {
     this.legend.hidden = !shown;
     if (!shown) return;
     if (document.activeElement !== this.vertex) this.vertex.value = String(shown.vertex);
-    this.low.textContent = shown.min < 0 ? shown.min.toFixed(4) : '0';
-    this.high.textContent = shown.max.toFixed(4);
+    [this.low.textContent, this.high.textContent] = influenceEnds(shown.min, shown.max);
     this.reach.textContent =
       `Control vertex ${shown.vertex} reaches ${shown.reached} of the ${shown.count} vertices of level ${shown.level}` +
       ` (largest weight ${shown.max.toFixed(4)}).`;
