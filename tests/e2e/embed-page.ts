@@ -44,7 +44,7 @@ export class EmbedPage {
   async recordEvents(): Promise<void> {
     await this.page.addInitScript(() => {
       window.__events = [];
-      for (const type of ['load', 'level-change', 'error', 'progress']) {
+      for (const type of ['load', 'level-change', 'error', 'progress', 'stencil', 'basis']) {
         document.addEventListener(type, (event) => {
           const target = event.target as HTMLElement;
           const detail = (event as CustomEvent).detail;
@@ -105,6 +105,16 @@ export class EmbedPage {
       })
       .toBe(true);
     return this.reading(id);
+  }
+
+  /** The text of element `id`'s teaching-tool caption (its `tool` part) as shown, a line a row; '' while hidden. */
+  async caption(id: string): Promise<string> {
+    const part = this.page.locator(`#${id}`).locator('[part="tool"]');
+    if (!(await part.isVisible())) return '';
+    const texts = await part
+      .locator('.tool-line:visible, .tool-legend:visible span, .tool-note:visible')
+      .allTextContents();
+    return texts.join('\n');
   }
 
   /** Screenshot of the page into test-results/screenshots/ (looked at by people, not compared). */

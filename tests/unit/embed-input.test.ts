@@ -23,6 +23,9 @@ describe('element attributes', () => {
       controls: 'minimal',
       alt: '',
       background: null,
+      tool: 'none',
+      vertex: null,
+      split: 1,
       problems: [],
     });
   });
@@ -85,6 +88,61 @@ describe('element attributes', () => {
   });
 });
 
+describe('teaching tool attributes', () => {
+  it('read tool, vertex and split', () => {
+    expect(readEmbedState(attrs({ tool: 'stencils', vertex: '7' }))).toMatchObject({
+      tool: 'stencils',
+      vertex: 7,
+      split: 1,
+      problems: [],
+    });
+    expect(readEmbedState(attrs({ tool: 'basis', vertex: ' 0 ' }))).toMatchObject({ tool: 'basis', vertex: 0 });
+    for (const [text, t] of [
+      ['0', 0],
+      ['0.5', 0.5],
+      ['.25', 0.25],
+      ['1', 1],
+      ['1.0', 1],
+    ] as const) {
+      expect(readEmbedState(attrs({ tool: 'split', split: text }))).toMatchObject({
+        tool: 'split',
+        split: t,
+        problems: [],
+      });
+    }
+    // Present but empty: as if absent.
+    expect(readEmbedState(attrs({ tool: '', vertex: '', split: '' }))).toMatchObject({
+      tool: 'none',
+      vertex: null,
+      split: 1,
+      problems: [],
+    });
+  });
+
+  it.each([
+    ['tool', 'stencil', 'tool must be none, stencils, basis or split, not "stencil".'],
+    ['tool', 'Basis', 'tool must be none, stencils, basis or split, not "Basis".'],
+    ['vertex', '-1', 'vertex must be a whole number ≥ 0, not "-1".'],
+    ['vertex', '2.5', 'vertex must be a whole number ≥ 0, not "2.5".'],
+    ['vertex', 'seven', 'vertex must be a whole number ≥ 0, not "seven".'],
+    ['vertex', '1e3', 'vertex must be a whole number ≥ 0, not "1e3".'],
+    ['vertex', '99999999999999999999', 'vertex must be a whole number ≥ 0, not "99999999999999999999".'],
+    ['split', '1.5', 'split must be a number from 0 to 1, not "1.5".'],
+    ['split', '-0.1', 'split must be a number from 0 to 1, not "-0.1".'],
+    ['split', 'half', 'split must be a number from 0 to 1, not "half".'],
+    ['split', 'NaN', 'split must be a number from 0 to 1, not "NaN".'],
+    ['split', '0x1', 'split must be a number from 0 to 1, not "0x1".'],
+  ])('name a bad %s="%s" and use the default', (attribute, value, message) => {
+    const state = readEmbedState(attrs({ tool: 'split', [attribute]: value }));
+    expect(state.problems).toEqual([{ attribute, message }]);
+    expect(state).toMatchObject({
+      tool: attribute === 'tool' ? 'none' : 'split',
+      vertex: null,
+      split: 1,
+    });
+  });
+});
+
 describe('element attributes, together', () => {
   it('name scheme="custom" without rules as a problem of the rules attribute', () => {
     expect(readEmbedState(attrs({ scheme: 'custom' })).problems).toEqual([
@@ -128,6 +186,22 @@ describe('iframe commands', () => {
     expect(checkCommand({ subdivlab: 'set-triangulate', on: true })).toMatchObject({ ok: true });
   });
 
+  it('accept the teaching tool commands', () => {
+    expect(checkCommand({ subdivlab: 'set-tool', tool: 'stencils', vertex: 7 })).toEqual({
+      ok: true,
+      command: { subdivlab: 'set-tool', tool: 'stencils', vertex: 7 },
+    });
+    expect(checkCommand({ subdivlab: 'set-tool', tool: 'none', extra: 'x' })).toEqual({
+      ok: true,
+      command: { subdivlab: 'set-tool', tool: 'none' },
+    });
+    expect(checkCommand({ subdivlab: 'set-split', t: 0.5 })).toEqual({
+      ok: true,
+      command: { subdivlab: 'set-split', t: 0.5 },
+    });
+    expect(checkCommand({ subdivlab: 'set-split', t: 0 })).toMatchObject({ ok: true });
+  });
+
   it.each([
     [{ subdivlab: 'set-render-mode', mode: 'glossy' }, 'set-render-mode: unknown mode "glossy"'],
     [
@@ -156,6 +230,18 @@ describe('iframe commands', () => {
       { subdivlab: 'set-view', view: { position: [0, 0, 1] } },
       'set-view needs view: nine numbers, or { position, target, up }',
     ],
+    [
+      { subdivlab: 'set-tool', tool: 'stencil' },
+      'set-tool: tool must be none, stencils, basis or split, not "stencil"',
+    ],
+    [{ subdivlab: 'set-tool' }, 'set-tool: tool must be none, stencils, basis or split, not undefined'],
+    [{ subdivlab: 'set-tool', tool: 'basis', vertex: -1 }, 'set-tool: vertex must be a whole number ≥ 0'],
+    [{ subdivlab: 'set-tool', tool: 'basis', vertex: '3' }, 'set-tool: vertex must be a whole number ≥ 0'],
+    [{ subdivlab: 'set-tool', tool: 'basis', vertex: 0.5 }, 'set-tool: vertex must be a whole number ≥ 0'],
+    [{ subdivlab: 'set-split', t: 2 }, 'set-split needs t, a number from 0 to 1'],
+    [{ subdivlab: 'set-split', t: '0.5' }, 'set-split needs t, a number from 0 to 1'],
+    [{ subdivlab: 'set-split', t: Number.NaN }, 'set-split needs t, a number from 0 to 1'],
+    [{ subdivlab: 'set-split' }, 'set-split needs t, a number from 0 to 1'],
   ])('refuse %j: %s', (data, reason) => {
     expect(checkCommand(data)).toEqual({ ok: false, reason });
   });

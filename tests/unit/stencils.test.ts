@@ -16,6 +16,7 @@ import { parseRuleSetText, type RuleSet } from '../../web/core/rule-set';
 import { fraction, vertexStencil } from '../../web/core/stencils';
 import { parseMesh, stepStencils, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
+import { stencilKindText, stencilSum } from '../../web/teach/stencil-inspector';
 import { FIXTURES_DIR, loadFixture } from './test-helpers';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -124,6 +125,38 @@ describe('fraction', () => {
     const beta5 = (5 / 8 - (3 / 8 + Math.cos((2 * Math.PI) / 5) / 4) ** 2) / 5;
     expect(fraction(beta5)).toBeNull();
     expect(fraction(Number.NaN)).toBeNull();
+  });
+});
+
+describe('stencils in words (the app panel and the <subdiv-viewer> caption)', () => {
+  it('group equal weights, largest first; name the vertex, edge or face and its valence', () => {
+    const cc = vertexStencil(stepStencils(loadFixture('grid-open.off'), { scheme: 'catmull-clark', levels: 1 }), 5);
+    expect(stencilSum(cc)).toBe('9/16·v5 + 3/32·(v1 + v4 + v6 + v9) + 1/64·(v0 + v2 + v8 + v10)');
+    expect(stencilKindText(cc)).toBe('vertex point of vertex 5, valence 4');
+    const edge = vertexStencil(stepStencils(loadFixture('torus-tri.off'), { scheme: 'loop', levels: 1 }), 48);
+    const [a, b] = edge.edge ?? [-1, -1];
+    expect(stencilKindText(edge)).toBe(`edge point of edge ${a}–${b}`);
+    expect(stencilSum(edge)).toMatch(
+      new RegExp(`^3/8·\\(v${Math.min(a, b)} \\+ v${Math.max(a, b)}\\) \\+ 1/8·\\(v\\d+ \\+ v\\d+\\)$`),
+    );
+  });
+
+  it('write a negative weight as a difference, and decimals where no fraction is exact', () => {
+    const stencil = {
+      vertex: 0,
+      kind: 'edge point',
+      element: null,
+      size: 0,
+      edge: [0, 1] as [number, number],
+      formula: '',
+      parents: [
+        { vertex: 0, weight: 0.5 },
+        { vertex: 1, weight: 0.5 },
+        { vertex: 2, weight: -1 / 16 },
+        { vertex: 3, weight: Math.PI / 100 },
+      ],
+    };
+    expect(stencilSum(stencil)).toBe('1/2·(v0 + v1) + 0.0314·v3 − 1/16·v2');
   });
 });
 

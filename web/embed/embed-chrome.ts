@@ -2,9 +2,10 @@
  * What `<subdiv-viewer>` shows around the picture, in its shadow root: the
  * stage the viewer draws into, a placeholder before the model, the message
  * of the last failure, the busy box with Cancel, a live region for screen
- * readers, and the control bar below.
+ * readers, and below it the teaching tool's caption and the control bar.
  */
 import { el } from '../ui/dom';
+import type { EmbedCaption } from './embed-caption';
 import type { EmbedControls } from './embed-controls';
 import { EMBED_CSS } from './embed-styles';
 
@@ -17,7 +18,7 @@ export class EmbedChrome {
   private readonly busyBox: HTMLElement;
   private readonly busyLabel: HTMLElement;
 
-  constructor(root: ShadowRoot, controls: EmbedControls, onCancel: () => void) {
+  constructor(root: ShadowRoot, controls: EmbedControls, caption: EmbedCaption, onCancel: () => void) {
     const style = document.createElement('style');
     style.textContent = EMBED_CSS;
     this.stage = el('div', { className: 'stage', attrs: { part: 'stage', role: 'region' } });
@@ -31,7 +32,7 @@ export class EmbedChrome {
     this.busyBox = el('div', { className: 'busy', attrs: { part: 'progress' } }, this.busyLabel, cancel);
     this.busyBox.hidden = true;
     this.stage.append(this.placeholder, this.message, this.busyBox, this.status);
-    root.append(style, el('div', { className: 'frame' }, this.stage, controls.element));
+    root.append(style, el('div', { className: 'frame' }, this.stage, caption.element, controls.element));
   }
 
   /** The stage's accessible name. */

@@ -1,12 +1,15 @@
 /**
  * The element's control bar: `minimal` has the level stepper and the scheme
  * menu; `full` adds the render mode, the control-mesh and control-edge
- * overlays, Fit and the counts. Every control is a native element with a
- * `part` name, so a page styles it with `subdiv-viewer::part(level-up)`.
+ * overlays, Fit and the counts. With tool="split" (either mode) a slider
+ * and Play run the step from the split to the smoothed level. Every control
+ * is a native element with a `part` name, so a page styles it with
+ * `subdiv-viewer::part(level-up)`.
  */
 import type { SchemeName } from '../core/mesh';
 import { RENDER_MODES, type RenderMode } from '../render/render-mode';
-import { el } from '../ui/dom';
+import type { SplitState } from '../teach/split-smooth';
+import { el, uniqueId } from '../ui/dom';
 import { faceTypes } from '../ui/facts-panel';
 import { SCHEME_NAMES, schemeInfo } from '../viewer/scheme-info';
 import type { ViewerState } from '../viewer/subdiv-viewer';
@@ -18,6 +21,10 @@ export interface EmbedControlHandlers {
   renderMode: (mode: RenderMode) => void;
   overlay: (name: 'control' | 'curves', on: boolean) => void;
   fit: () => void;
+  /** The split slider moved (0: the split alone … 1: smoothed). */
+  split: (t: number) => void;
+  /** Play the step from the split to the smoothed level. */
+  play: () => void;
 }
 
 function withPart<T extends HTMLElement>(element: T, part: string, label?: string): T {
@@ -37,6 +44,10 @@ export class EmbedControls {
   private readonly curves: HTMLInputElement;
   private readonly facts: HTMLElement;
   private readonly fullOnly: HTMLElement[];
+  /** Split, then smooth: the slider and Play, shown with tool="split". */
+  private readonly splitGroup: HTMLElement;
+  private readonly splitSlider: HTMLInputElement;
+  private readonly play: HTMLButtonElement;
 
   constructor(handlers: EmbedControlHandlers) {
     this.down = withPart(el('button', { text: '−', attrs: { type: 'button' } }), 'level-down', 'Previous level');
@@ -70,7 +81,29 @@ export class EmbedControls {
       el('div', { className: 'bar', attrs: { role: 'toolbar', 'aria-label': 'Viewer controls' } }),
       'controls',
     );
-    this.element.append(this.down, this.level, this.up, this.scheme, ...this.fullOnly);
+    const sliderId = uniqueId('split');
+    this.splitSlider = withPart(
+      el('input', { attrs: { id: sliderId, type: 'range', min: '0', max: '1', step: '0.01', value: '1' } }),
+      'split',
+      'Split (0) to smoothed (1)',
+    );
+    this.splitSlider.addEventListener('input', () => handlers.split(Number(this.splitSlider.value)));
+    this.play = withPart(el('button', { text: 'Play', attrs: { type: 'button' } }), 'play', 'Play the step');
+    this.play.addEventListener('click', handlers.play);
+    this.splitGroup = el('span', { className: 'split' }, this.splitSlider, this.play);
+    this.splitGroup.hidden = true;
+    this.element.append(this.down, this.level, this.up, this.scheme, this.splitGroup, ...this.fullOnly);
+  }
+
+  /** The split slider and Play for `state` (null: tool is not split, they are hidden). */
+  updateSplit(state: SplitState | null): void {
+    this.splitGroup.hidden = state === null;
+    if (!state) return;
+    this.splitSlider.disabled = !state.available;
+    this.play.disabled = !state.available || state.animating;
+    // Not under the pointer of someone dragging it (the drawing follows a moment later).
+    const root = this.splitSlider.getRootNode() as Document | ShadowRoot;
+    if (root.activeElement !== this.splitSlider || state.animating) this.splitSlider.value = String(state.t);
   }
 
   setMode(mode: ControlsMode): void {

@@ -30,11 +30,31 @@ export interface ErrorDetail {
   source: string;
 }
 
-/** `detail` of `progress`: busy starts and ends. */
+/** `detail` of `progress`: busy starts and ends (`compute`: a teaching tool's request). */
 export interface ProgressDetail {
   busy: boolean;
-  kind: 'load' | 'subdivide' | 'export' | null;
+  kind: 'load' | 'subdivide' | 'compute' | 'export' | null;
   label: string;
+}
+
+/** `detail` of `stencil` (tool="stencils"): vertex `vertex` of level `level` as its parents at level − 1 make it. */
+export interface StencilDetail {
+  level: number;
+  vertex: number;
+  /** "vertex point", "edge point", "face point", "border vertex", … */
+  kind: string;
+  parents: { vertex: number; weight: number }[];
+}
+
+/** `detail` of `basis` (tool="basis"): control vertex `vertex`'s basis function on level `level`. */
+export interface BasisDetail {
+  vertex: number;
+  level: number;
+  /** Vertices of the level it reaches (a weight other than 0), of `count`. */
+  reached: number;
+  count: number;
+  /** Its largest weight. */
+  max: number;
 }
 
 /** A bad attribute value. */

@@ -8,14 +8,15 @@
  * `subdivide`, `set-level` ({ level }), `set-view` ({ view }: the nine-number
  * string or { position, target, up }), `set-render-mode` ({ mode }),
  * `set-overlay` ({ overlay: control-mesh, control-edges, bbox or creases; on }),
- * `set-triangulate` ({ on }).
- * Events: `ready`, `load`, `level-change`, `error`, `progress`.
+ * `set-triangulate` ({ on }), `set-tool` ({ tool, vertex? }), `set-split` ({ t }).
+ * Events: `ready`, `load`, `level-change`, `error`, `progress`, `stencil`, `basis`.
  */
 import type { SchemeName } from '../core/mesh';
 import { RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { checkedView, parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
 import { MAX_PARAM_LEVELS, OVERLAY_KEYS } from '../viewer/viewer-params';
+import { type EmbedTool, isEmbedTool } from './embed-state';
 
 export type EmbedCommand =
   | { subdivlab: 'load'; src: string }
@@ -26,13 +27,15 @@ export type EmbedCommand =
   | { subdivlab: 'set-view'; view: ViewState }
   | { subdivlab: 'set-render-mode'; mode: RenderMode }
   | { subdivlab: 'set-overlay'; overlay: OverlayAttribute; on: boolean }
-  | { subdivlab: 'set-triangulate'; on: boolean };
+  | { subdivlab: 'set-triangulate'; on: boolean }
+  | { subdivlab: 'set-tool'; tool: EmbedTool; vertex?: number }
+  | { subdivlab: 'set-split'; t: number };
 
 /** The overlays a command may switch, by their attribute names (as links write them). */
 const OVERLAY_ATTRIBUTES: readonly string[] = Object.values(OVERLAY_KEYS);
 export type OverlayAttribute = (typeof OVERLAY_KEYS)[keyof typeof OVERLAY_KEYS];
 
-export type EmbedEventName = 'ready' | 'load' | 'level-change' | 'error' | 'progress';
+export type EmbedEventName = 'ready' | 'load' | 'level-change' | 'error' | 'progress' | 'stencil' | 'basis';
 
 /** An event as posted to the parent: the element's event detail plus its name. */
 export type EmbedEventMessage = { subdivlab: EmbedEventName } & Record<string, unknown>;
@@ -102,6 +105,24 @@ export function checkCommand(data: unknown): Checked {
     case 'set-triangulate':
       if (typeof data.on === 'boolean') return { ok: true, command: { subdivlab: 'set-triangulate', on: data.on } };
       return { ok: false, reason: 'set-triangulate needs on (true or false)' };
+    case 'set-tool': {
+      if (typeof data.tool !== 'string' || !isEmbedTool(data.tool)) {
+        return {
+          ok: false,
+          reason: `set-tool: tool must be none, stencils, basis or split, not ${JSON.stringify(data.tool)}`,
+        };
+      }
+      if (data.vertex === undefined) return { ok: true, command: { subdivlab: 'set-tool', tool: data.tool } };
+      if (typeof data.vertex === 'number' && Number.isSafeInteger(data.vertex) && data.vertex >= 0) {
+        return { ok: true, command: { subdivlab: 'set-tool', tool: data.tool, vertex: data.vertex } };
+      }
+      return { ok: false, reason: 'set-tool: vertex must be a whole number ≥ 0' };
+    }
+    case 'set-split':
+      if (typeof data.t === 'number' && data.t >= 0 && data.t <= 1) {
+        return { ok: true, command: { subdivlab: 'set-split', t: data.t } };
+      }
+      return { ok: false, reason: 'set-split needs t, a number from 0 to 1' };
     default:
       return { ok: false, reason: `unknown command ${JSON.stringify(name)}` };
   }

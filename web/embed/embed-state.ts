@@ -29,10 +29,25 @@ export interface EmbedState {
   alt: string;
   /** A CSS colour, `transparent`, or null for the default (light or dark). */
   background: string | null;
+  /** The teaching tool switched on. */
+  tool: EmbedTool;
+  /** The vertex the tool shows (stencils: of the shown level; basis: of the control mesh); null: none yet. */
+  vertex: number | null;
+  /** Split, then smooth: 0 the split alone … 1 the smoothed level. */
+  split: number;
   problems: { attribute: string; message: string }[];
 }
 
 export const DEFAULT_CONTROLS: ControlsMode = 'minimal';
+
+/** The teaching tools an element can show (web/teach/): none, the stencil inspector, a basis function, split then smooth. */
+export type EmbedTool = 'none' | 'stencils' | 'basis' | 'split';
+
+export const EMBED_TOOLS: readonly EmbedTool[] = ['none', 'stencils', 'basis', 'split'];
+
+export function isEmbedTool(value: string): value is EmbedTool {
+  return (EMBED_TOOLS as readonly string[]).includes(value);
+}
 
 /** Reads the state from `attr(name)` (an element's getAttribute). */
 export function readEmbedState(attr: (name: string) => string | null): EmbedState {
@@ -101,6 +116,29 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
       message: `background must be a CSS colour or transparent, not "${backgroundText}".`,
     });
   }
+  const toolText = attr('tool')?.trim() || null;
+  let tool: EmbedTool = 'none';
+  if (toolText !== null) {
+    if (isEmbedTool(toolText)) tool = toolText;
+    else
+      problems.push({
+        attribute: 'tool',
+        message: `tool must be none, stencils, basis or split, not "${toolText}".`,
+      });
+  }
+  const vertexText = attr('vertex');
+  let vertex: number | null = null;
+  if (vertexText !== null && vertexText.trim() !== '') {
+    if (/^\s*\d+\s*$/.test(vertexText) && Number.isSafeInteger(Number(vertexText))) vertex = Number(vertexText);
+    else problems.push({ attribute: 'vertex', message: `vertex must be a whole number ≥ 0, not "${vertexText}".` });
+  }
+  const splitText = attr('split');
+  let split = 1;
+  if (splitText !== null && splitText.trim() !== '') {
+    const t = /^\s*[+]?(\d+\.?\d*|\.\d+)\s*$/.test(splitText) ? Number(splitText) : Number.NaN;
+    if (t >= 0 && t <= 1) split = t;
+    else problems.push({ attribute: 'split', message: `split must be a number from 0 to 1, not "${splitText}".` });
+  }
   return {
     src: attr('src')?.trim() ?? '',
     scheme,
@@ -119,6 +157,9 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     controls,
     alt: attr('alt') ?? '',
     background,
+    tool,
+    vertex,
+    split,
     problems,
   };
 }

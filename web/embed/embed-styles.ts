@@ -49,6 +49,20 @@ export const EMBED_CSS = `
 .placeholder {
   position: absolute; inset: 0; display: grid; place-items: center; color: #52606d; pointer-events: none;
 }
+/* The teaching tool's caption: a row of its own above the controls, so it never covers the model. */
+.tool {
+  flex: 0 0 auto; padding: 4px 8px; background: rgba(255, 255, 255, 0.92); border-top: 1px solid #d6dbe1;
+  max-height: 40%; overflow: auto;
+}
+.tool p { margin: 0; }
+.tool-line { font-variant-numeric: tabular-nums; overflow-wrap: anywhere; }
+.tool-line.hint, .tool-note { color: #52606d; }
+/* The formula on one line (the whole of it in the tooltip): the picture keeps its height in a small viewer. */
+.tool-note { font-size: 12px; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
+.tool-legend { display: flex; align-items: center; gap: 6px; margin-top: 2px; font-size: 12px; color: #52606d; }
+.tool-bar { flex: 0 1 14em; height: 10px; border-radius: 2px; }
+.split { display: inline-flex; align-items: center; gap: 6px; }
+.split input { width: 8em; margin: 0; }
 /* Narrow viewers keep one row of controls: the counts and labels give way first. */
 @container (max-width: 440px) {
   .facts { display: none; }
@@ -57,7 +71,8 @@ export const EMBED_CSS = `
 }
 @media (prefers-color-scheme: dark) {
   :host { color: #e4e7eb; background: #1f2328; }
-  .bar, .busy { background: rgba(31, 35, 40, 0.92); border-color: #3e4650; }
+  .bar, .busy, .tool { background: rgba(31, 35, 40, 0.92); border-color: #3e4650; }
+  .tool-line.hint, .tool-note, .tool-legend { color: #aab3bd; }
   .bar button, .bar select { background: #2b3036; border-color: #56606b; }
   .facts, .placeholder { color: #aab3bd; }
   .message { background: #3b1f1f; color: #ffd7d5; border-color: #7a2e2b; }

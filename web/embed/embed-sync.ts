@@ -27,6 +27,8 @@ export interface SyncHost {
   downloadChanged(): void;
   /** A pass ended with no failure, standing or new, and no attribute problem: the message may go. */
   allWell(): void;
+  /** No pass runs any more: the viewer shows what the attributes ask (or what it could reach). */
+  settled(): void;
 }
 
 /** A model given to load(), waiting for the next pass. */
@@ -83,6 +85,7 @@ export class EmbedSync {
       } finally {
         this.syncing = null;
       }
+      this.host.settled();
     })();
     return this.syncing;
   }
@@ -90,6 +93,11 @@ export class EmbedSync {
   /** The pass running now, or a new one. */
   current(): Promise<void> {
     return this.syncing ?? this.request();
+  }
+
+  /** A pass runs (the viewer is being brought to the attributes). */
+  get running(): boolean {
+    return this.syncing !== null;
   }
 
   /** The level the running pass aims at (null between passes). */

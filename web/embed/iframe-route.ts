@@ -1,6 +1,6 @@
 /**
  * embed.html: one `<subdiv-viewer>` filling the page, started from the
- * query (`?src=…&scheme=…&levels=…&mode=…&view=…&controls=…`), for learning
+ * query (`?src=…&scheme=…&levels=…&mode=…&view=…&controls=…&tool=…`), for learning
  * platforms that accept only iframes. It posts the element's events to the
  * parent page and takes commands from it (embed-messages.ts).
  */
@@ -25,7 +25,8 @@ if (params.triangulate) viewer.setAttribute('triangulate', '');
 if (params.view) viewer.setAttribute('view', formatViewString(params.view));
 if (params.rules) viewer.setAttribute('rules', params.rules);
 viewer.setAttribute('controls', params.controls ?? 'minimal');
-for (const key of ['alt', 'background']) {
+// Read by the element, which names a bad value in an `error` event (posted to the parent).
+for (const key of ['alt', 'background', 'tool', 'vertex', 'split']) {
   const value = query.get(key);
   if (value !== null) viewer.setAttribute(key, value);
 }
@@ -38,7 +39,7 @@ function post(name: EmbedEventName, detail: object): void {
   window.parent.postMessage({ subdivlab: name, ...detail } satisfies EmbedEventMessage, '*');
 }
 
-for (const name of ['load', 'level-change', 'error', 'progress'] as const) {
+for (const name of ['load', 'level-change', 'error', 'progress', 'stencil', 'basis'] as const) {
   viewer.addEventListener(name, (event) => post(name, (event as CustomEvent).detail ?? {}));
 }
 for (const problem of problems) post('error', { code: 'invalid_argument', message: problem, line: 0, source: 'query' });
@@ -78,6 +79,14 @@ window.addEventListener('message', (event: MessageEvent) => {
       break;
     case 'set-triangulate':
       viewer.triangulate = command.on;
+      break;
+    case 'set-tool':
+      // The vertex first: the tool then starts on it.
+      if (command.vertex !== undefined) viewer.vertex = command.vertex;
+      viewer.tool = command.tool;
+      break;
+    case 'set-split':
+      viewer.split = command.t;
       break;
   }
 });

@@ -3,7 +3,8 @@
  * teaching pages. Attributes describe the state it should show (model,
  * scheme, level, display, camera) and are applied live; methods mirror the
  * viewer; events (bubbling, composed CustomEvents) report `load`,
- * `level-change`, `error` and `progress`. Every viewer of a page shares one
+ * `level-change`, `error` and `progress`, and the teaching tools'
+ * `stencil` and `basis` (embed-tools.ts). Every viewer of a page shares one
  * worker and one WebGL renderer; a viewer starts when it nears the
  * viewport and gives its GPU memory back when it is far from it.
  */
@@ -22,11 +23,13 @@ import { meshText, readFile } from '../viewer/mesh-source';
 import { schemeInfo } from '../viewer/scheme-info';
 import { SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
 import { MAX_PARAM_LEVELS, OVERLAY_KEYS } from '../viewer/viewer-params';
+import { EmbedCaption } from './embed-caption';
 import { EmbedChrome } from './embed-chrome';
 import { EmbedControls } from './embed-controls';
 import { whenFar, whenNear } from './embed-distance';
 import { errorDetail, type LevelChangeDetail, type LoadDetail, type ProgressDetail } from './embed-events';
 import { EmbedSync } from './embed-sync';
+import { EmbedTools } from './embed-tools';
 import { OBSERVED_ATTRIBUTES, ViewerAttributes } from './viewer-attributes';
 
 /** Attributes applied without touching the model or its levels. */
@@ -39,13 +42,18 @@ const DISPLAY_ATTRIBUTES = new Set([
   'controls',
   'alt',
   'background',
+  'tool',
+  'vertex',
+  'split',
 ]);
 
 export class SubdivViewerElement extends ViewerAttributes {
   static readonly observedAttributes = OBSERVED_ATTRIBUTES;
 
   private viewer: SubdivViewer | null = null;
+  private tools: EmbedTools | null = null;
   private readonly controlBar: EmbedControls;
+  private readonly caption = new EmbedCaption();
   private readonly chrome: EmbedChrome;
   /** Stop watching the distance to the viewport (start, release). */
   private unwatch: (() => void)[] = [];
@@ -65,6 +73,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       if (this.viewer) this.onState(this.viewer.state);
     },
     allWell: () => this.chrome.hideMessage(),
+    settled: () => this.tools?.refresh(),
   });
   private last: { level: number; facts: MeshFacts | null; busy: boolean; scheme: SchemeName } | null = null;
   private gpuReleasedFlag = false;
@@ -81,8 +90,11 @@ export class SubdivViewerElement extends ViewerAttributes {
       },
       overlay: (name, on) => this.setFlag(OVERLAY_KEYS[name], on),
       fit: () => this.viewer?.fitView(),
+      split: (t) => this.setAttribute('split', String(t)),
+      play: () => this.tools?.play(),
     });
-    this.chrome = new EmbedChrome(this.attachShadow({ mode: 'open' }), this.controlBar, () => this.cancel());
+    const root = this.attachShadow({ mode: 'open' });
+    this.chrome = new EmbedChrome(root, this.controlBar, this.caption, () => this.cancel());
     this.installKeys();
     this.darkQuery.addEventListener('change', () => this.applyDisplay());
   }
@@ -107,6 +119,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.sync.reset();
       this.viewer.dispose();
       this.viewer = null;
+      this.tools = null;
       // A page's spinner waits for the end of what was under way.
       if (this.last?.busy) this.dispatch('progress', { busy: false, kind: null, label: '' } as ProgressDetail);
       this.last = null;
@@ -242,6 +255,19 @@ export class SubdivViewerElement extends ViewerAttributes {
     });
     this.viewer = viewer;
     viewer.onChange((state) => this.onState(state));
+    this.tools = new EmbedTools(
+      viewer,
+      {
+        readState: () => this.readState(),
+        settling: () => this.sync.running,
+        setVertex: (vertex) => this.setAttribute('vertex', String(vertex)),
+        setSplit: (t) => this.setAttribute('split', String(t)),
+        fail: (error) => this.fail(viewer.state.modelName ?? 'mesh', error),
+        dispatch: (type: string, detail: unknown) => this.dispatch(type, detail),
+      },
+      this.caption,
+      this.controlBar,
+    );
     this.controlBar.update(viewer.state);
     this.unwatch.push(
       whenFar(
@@ -287,6 +313,7 @@ export class SubdivViewerElement extends ViewerAttributes {
     const background = want.background ?? (dark ? VIEW_COLORS.backgroundDark : VIEW_COLORS.background);
     viewer.view.setBackground(background === 'transparent' ? null : background, dark);
     if (applyView && want.view && viewer.state.levelCount > 0) viewer.setView(want.view);
+    this.tools?.apply();
   }
 
   private describe(): string {

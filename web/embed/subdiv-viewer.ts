@@ -5,7 +5,15 @@
  */
 import { SubdivViewerElement } from './subdiv-viewer-element';
 
-export type { ErrorDetail, LevelChangeDetail, LoadDetail, ProgressDetail } from './embed-events';
+export type {
+  BasisDetail,
+  ErrorDetail,
+  LevelChangeDetail,
+  LoadDetail,
+  ProgressDetail,
+  StencilDetail,
+} from './embed-events';
+export type { EmbedTool } from './embed-state';
 export { SubdivViewerElement };
 
 if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', SubdivViewerElement);

@@ -7,7 +7,7 @@
 import type { SchemeName } from '../core/mesh';
 import { OVERLAY_DEFAULTS, type RenderMode } from '../render/render-mode';
 import { type ControlsMode, OVERLAY_KEYS } from '../viewer/viewer-params';
-import { type EmbedState, readEmbedState } from './embed-state';
+import { type EmbedState, type EmbedTool, readEmbedState } from './embed-state';
 
 /** Every attribute of the element and the property that reflects it. */
 const PROPERTIES = {
@@ -25,6 +25,9 @@ const PROPERTIES = {
   controls: 'controls',
   alt: 'alt',
   background: 'background',
+  tool: 'tool',
+  vertex: 'vertex',
+  split: 'split',
 } as const;
 
 /** The attributes the element observes. */
@@ -116,6 +119,28 @@ export class ViewerAttributes extends HTMLElement {
   }
   set background(value: string) {
     this.setAttribute('background', value);
+  }
+  /** The teaching tool shown: `none`, `stencils`, `basis` or `split`. */
+  get tool(): EmbedTool {
+    return this.readState().tool;
+  }
+  set tool(value: EmbedTool) {
+    this.setAttribute('tool', value);
+  }
+  /** The vertex the tool shows (null: none; set null to remove the attribute). */
+  get vertex(): number | null {
+    return this.readState().vertex;
+  }
+  set vertex(value: number | null) {
+    if (value === null) this.removeAttribute('vertex');
+    else this.setAttribute('vertex', String(value));
+  }
+  /** Split, then smooth: 0 (the split alone) to 1 (the smoothed level). */
+  get split(): number {
+    return this.readState().split;
+  }
+  set split(value: number) {
+    this.setAttribute('split', String(value));
   }
 
   /**

@@ -22,6 +22,8 @@ export interface BasisState {
   shown: { vertex: number; level: number; max: number; min: number; reached: number; count: number } | null;
   controlVertices: number;
   message: string;
+  /** Why the last vertex asked for is not shown (a number out of range); '' when none. */
+  problem: string;
 }
 
 export class BasisView {
@@ -70,6 +72,7 @@ export class BasisView {
       controlVertices: (this.viewer.controlMesh?.positions.length ?? 0) / 3,
       message:
         this.message || (this.picking && !this.shown ? 'Click a vertex of the control mesh, or type its number.' : ''),
+      problem: this.message,
     };
   }
 
@@ -98,8 +101,14 @@ export class BasisView {
 
   click(click: ViewClick): void {
     if (!this.picking) return;
+    const vertex = this.pick(click);
+    if (vertex !== null) void this.select(vertex);
+  }
+
+  /** The control vertex under a click of the view, or null. */
+  pick(click: ViewClick): number | null {
     const pick = this.viewer.view.pickControl(click.x, click.y);
-    if (pick?.kind === 'vertex') void this.select(pick.vertex);
+    return pick?.kind === 'vertex' ? pick.vertex : null;
   }
 
   /** Colours the shown level by control vertex `vertex`'s basis function. */

@@ -24,6 +24,8 @@ export interface InspectorState {
   stencil: InspectedStencil | null;
   /** Why nothing is shown, or what to do next. */
   message: string;
+  /** Why the last vertex asked for is not shown (level 0, a number out of range); '' when none. */
+  problem: string;
 }
 
 export interface InspectedStencil extends VertexStencil {
@@ -40,6 +42,52 @@ export interface InspectedStencil extends VertexStencil {
 /** A weight as the inspector writes it: "3/8", or four decimals (Loop's β(5) = 0.0663). */
 export function weightText(weight: number): string {
   return fraction(weight) ?? weight.toFixed(4);
+}
+
+/**
+ * Where a vertex comes from, in words: the element (`vertex 7`, `edge 2–5`,
+ * `face 3`; '' where the host does not name it) and its valence or degree
+ * (`valence 3`, `degree 4`; '' for an edge point).
+ */
+export function stencilOrigin(s: VertexStencil): { of: string; size: string } {
+  const of = s.edge
+    ? `edge ${s.edge[0]}–${s.edge[1]}`
+    : s.element !== null
+      ? `${/face/.test(s.kind) ? 'face' : 'vertex'} ${s.element}`
+      : '';
+  const size = s.edge ? '' : /face|corner/.test(s.kind) ? `degree ${s.size}` : `valence ${s.size}`;
+  return { of, size };
+}
+
+/** The vertex's kind and origin in one phrase: "vertex point of vertex 7, valence 3". */
+export function stencilKindText(s: VertexStencil): string {
+  const { of, size } = stencilOrigin(s);
+  return `${s.kind}${of ? ` of ${of}` : ''}${size ? `, ${size}` : ''}`;
+}
+
+/**
+ * The weighted sum of the parents, equal weights grouped, largest first:
+ * "5/12·v7 + 1/6·(v1 + v3 + v6) + 1/36·(v0 + v2 + v5)" (v: a vertex of the
+ * level before).
+ */
+export function stencilSum(s: VertexStencil): string {
+  const groups = new Map<string, { weight: number; vertices: number[] }>();
+  for (const { vertex, weight } of s.parents) {
+    const text = weightText(Math.abs(weight));
+    const key = `${weight < 0 ? '-' : ''}${text}`;
+    const group = groups.get(key) ?? { weight, vertices: [] };
+    group.vertices.push(vertex);
+    groups.set(key, group);
+  }
+  const terms = [...groups.values()].sort((a, b) => b.weight - a.weight);
+  return terms
+    .map(({ weight, vertices }, i) => {
+      const sign = weight < 0 ? (i === 0 ? '−' : ' − ') : i === 0 ? '' : ' + ';
+      const points = vertices.map((v) => `v${v}`);
+      const sum = points.length === 1 ? points[0] : `(${points.join(' + ')})`;
+      return `${sign}${weightText(Math.abs(weight))}·${sum}`;
+    })
+    .join('');
 }
 
 export class StencilInspector {
@@ -76,6 +124,7 @@ export class StencilInspector {
       vertexCount: viewer.facts?.vertices ?? 0,
       stencil: this.inspected,
       message: this.message || this.hint(),
+      problem: this.message,
     };
   }
 
@@ -94,9 +143,14 @@ export class StencilInspector {
   /** Inspects the vertex under a click of the view (nothing there: clears). */
   click(click: ViewClick): void {
     if (!this.inspecting) return;
-    const vertex = this.viewer.view.pickVertex(click.x, click.y);
+    const vertex = this.pick(click);
     if (vertex === null) this.clear();
     else void this.select(vertex);
+  }
+
+  /** The vertex of the shown level under a click of the view, or null. */
+  pick(click: ViewClick): number | null {
+    return this.viewer.view.pickVertex(click.x, click.y);
   }
 
   /** Inspects vertex `vertex` of the shown level. */

@@ -4,8 +4,8 @@
  * the largest weight and how many of the level's vertices it reaches.
  */
 import type { BasisState } from '../teach/basis-view';
-import { colourBar } from './colour-bar';
 import { button, el, section, vertexField } from './dom';
+import { influenceEnds, labelledInfluenceBar } from './influence-bar';
 
 export interface BasisPanelHandlers {
   onPicking: (on: boolean) => void;
@@ -35,7 +35,7 @@ export class BasisPanel {
     const field = vertexField('Control vertex', 'basis.vertex', handlers.onVertex);
     this.vertex = field.input;
     this.row = field.row;
-    const bar = colourBar('colour bar: no influence (dark) to the largest (yellow)', 'basis');
+    const bar = labelledInfluenceBar('basis');
     this.low = bar.low;
     this.high = bar.high;
     this.reach = el('p', { testId: 'basis.reach' });
@@ -55,8 +55,7 @@ export class BasisPanel {
     this.legend.hidden = !shown;
     if (!shown) return;
     if (document.activeElement !== this.vertex) this.vertex.value = String(shown.vertex);
-    this.low.textContent = shown.min < 0 ? shown.min.toFixed(4) : '0';
-    this.high.textContent = shown.max.toFixed(4);
+    [this.low.textContent, this.high.textContent] = influenceEnds(shown.min, shown.max);
     this.reach.textContent =
       `Control vertex ${shown.vertex} reaches ${shown.reached} of the ${shown.count} vertices of level ${shown.level}` +
       ` (largest weight ${shown.max.toFixed(4)}).`;

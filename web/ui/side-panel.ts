@@ -5,8 +5,8 @@
  */
 import { MAX_PANES, type SideBySideState } from '../teach/side-by-side';
 import { schemeInfo } from '../viewer/scheme-info';
-import { colourBar } from './colour-bar';
 import { el, section, uniqueId } from './dom';
+import { type LabelledBar, labelledInfluenceBar } from './influence-bar';
 
 export interface SidePanelHandlers {
   onCount: (count: number) => void;
@@ -30,7 +30,7 @@ export class SidePanel {
   private readonly pair: [HTMLSelectElement, HTMLSelectElement];
   private readonly result: HTMLElement;
   private readonly legend: HTMLElement;
-  private readonly bar: ReturnType<typeof colourBar>;
+  private readonly bar: LabelledBar;
 
   constructor(handlers: SidePanelHandlers) {
     const countId = uniqueId('panes');
@@ -55,7 +55,10 @@ export class SidePanel {
       this.pair[1],
     );
     this.result = el('p', { testId: 'side.distance', attrs: { 'aria-live': 'polite' } });
-    this.bar = colourBar('colour bar: on the other surface (dark) to the Hausdorff distance (yellow)', 'side');
+    this.bar = labelledInfluenceBar(
+      'side',
+      'colour bar: on the other surface (dark) to the Hausdorff distance (yellow)',
+    );
     this.legend = el('div', { testId: 'side.legend' }, this.bar.element);
     this.options = el(
       'div',

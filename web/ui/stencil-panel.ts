@@ -4,7 +4,7 @@
  * degree, the scheme's formula and its parents with their weights, with
  * the sums that prove them (Σ w = 1, Σ w·p = p).
  */
-import type { InspectorState } from '../teach/stencil-inspector';
+import { type InspectorState, stencilKindText } from '../teach/stencil-inspector';
 import { button, el, section, vertexField } from './dom';
 
 export interface StencilPanelHandlers {
@@ -63,18 +63,12 @@ export class StencilPanel {
       return;
     }
     if (document.activeElement !== this.vertex) this.vertex.value = String(s.vertex);
-    const of = s.edge
-      ? ` of edge ${s.edge[0]}–${s.edge[1]}`
-      : s.element !== null
-        ? ` of ${/face/.test(s.kind) ? 'face' : 'vertex'} ${s.element}`
-        : '';
-    const size = s.edge ? '' : /face|corner/.test(s.kind) ? `degree ${s.size}` : `valence ${s.size}`;
     const rows = s.parents.map((p, i) =>
       el('tr', {}, el('td', { text: String(p.vertex) }), el('td', { text: s.weightTexts[i] })),
     );
     this.details.replaceChildren(
       el('p', { testId: 'stencils.title', className: 'stencil-title', text: `Vertex ${s.vertex} of level ${s.level}` }),
-      el('p', { testId: 'stencils.kind', text: `${s.kind}${of}${size ? `, ${size}` : ''}` }),
+      el('p', { testId: 'stencils.kind', text: stencilKindText(s) }),
       ...(s.formula ? [el('p', { testId: 'stencils.formula', className: 'stencil-formula', text: s.formula })] : []),
       el(
         'table',
