@@ -44,7 +44,7 @@ export class EmbedPage {
   async recordEvents(): Promise<void> {
     await this.page.addInitScript(() => {
       window.__events = [];
-      for (const type of ['load', 'level-change', 'error', 'progress', 'stencil', 'basis']) {
+      for (const type of ['load', 'level-change', 'error', 'progress', 'stencil', 'basis', 'distance']) {
         document.addEventListener(type, (event) => {
           const target = event.target as HTMLElement;
           const detail = (event as CustomEvent).detail;
@@ -107,9 +107,9 @@ export class EmbedPage {
     return this.reading(id);
   }
 
-  /** The text of element `id`'s teaching-tool caption (its `tool` part) as shown, a line a row; '' while hidden. */
-  async caption(id: string): Promise<string> {
-    const part = this.page.locator(`#${id}`).locator('[part="tool"]');
+  /** The text of element `id`'s caption `part` (the teaching tool's, or `distance`) as shown, a line a row; '' while hidden. */
+  async caption(id: string, partName = 'tool'): Promise<string> {
+    const part = this.page.locator(`#${id}`).locator(`[part="${partName}"]`);
     if (!(await part.isVisible())) return '';
     const texts = await part
       .locator('.tool-line:visible, .tool-legend:visible span, .tool-note:visible')

@@ -198,7 +198,7 @@ test('tool="basis": control vertex 0 of the torus reaches 169 of the 768 vertice
     .poll(() => embed.caption('b'))
     .toContain('Basis function of control vertex 0: reaches 169 of 768 vertices');
   expect(await embed.caption('b')).toContain(max.toFixed(4));
-  await expect(viewer.locator('.tool-bar')).toBeVisible();
+  await expect(viewer.locator('[part="tool"] .tool-bar')).toBeVisible();
   // The surface in the colour bar's colours; the same torus without the tool has none of them.
   expect(await purplePixels(viewer.locator('canvas'))).toBeGreaterThan(2000);
   expect(await purplePixels(page.locator('#plain canvas'))).toBe(0);

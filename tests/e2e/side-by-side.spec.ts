@@ -6,32 +6,13 @@
  * one view, the picture is the plain one again; another model, and the
  * panes follow it.
  */
-import { spawnSync } from 'node:child_process';
-import { mkdtempSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import type { SideBySideTestState } from '../../web/app/test-api';
+import { cliDistance as compareLevels } from './cli-distance';
 import { expect, test } from './fixtures';
 
-const CUBE = 'public/meshes/cube.off';
-
-/** Runs the `subdiv` CLI; its standard output. */
-function subdiv(args: string[]): string {
-  const r = spawnSync(process.execPath, ['bin/subdiv.mjs', ...args], { encoding: 'utf8' });
-  expect(r.stderr).toBe('');
-  expect(r.status).toBe(0);
-  return r.stdout;
-}
-
-/** `subdiv compare` of the cube's level `levels` under the two schemes. */
-function cliDistance(levels: [number, number]): { distance: number; relative: number; errorBound: number } {
-  const work = mkdtempSync(join(tmpdir(), 'side-by-side-'));
-  const cc = join(work, 'cc.off');
-  const loop = join(work, 'loop.off');
-  subdiv([CUBE, '--scheme', 'catmull-clark', '--levels', String(levels[0]), '-o', cc]);
-  subdiv([CUBE, '--scheme', 'loop', '--triangulate', '--levels', String(levels[1]), '-o', loop]);
-  return JSON.parse(subdiv(['compare', cc, loop]));
-}
+/** `subdiv compare` of the sample cube's Catmull-Clark and Loop levels. */
+const cliDistance = (levels: [number, number]) =>
+  compareLevels('public/meshes/cube.off', ['catmull-clark', levels[0]], ['loop', levels[1]]);
 
 test('Catmull-Clark beside Loop on the cube: linked panes, levels together and apart, the Hausdorff distance of the CLI', async ({
   app,
@@ -150,5 +131,19 @@ test('Catmull-Clark beside Loop on the cube: linked panes, levels together and a
     await measured([1, 1]);
     await app.subdivide();
     await measured([2, 2]);
+  });
+
+  await test.step('the link keeps the panes: beside=loop, and a reload shows them again', async () => {
+    await app.waitForHash('beside', 'loop');
+    await app.page.reload();
+    await expect
+      .poll(async () => (await side()).panes.map((p) => [p.scheme, p.level]))
+      .toEqual([
+        ['catmull-clark', 2],
+        ['loop', 2],
+      ]);
+    await measured([2, 2]);
+    await app.byTestId('side.count').selectOption('1');
+    await expect.poll(async () => (await app.hashParams()).has('beside')).toBe(false);
   });
 });

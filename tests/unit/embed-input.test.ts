@@ -26,6 +26,8 @@ describe('element attributes', () => {
       tool: 'none',
       vertex: null,
       split: 1,
+      beside: [],
+      distance: true,
       problems: [],
     });
   });
@@ -140,6 +142,24 @@ describe('teaching tool attributes', () => {
       vertex: null,
       split: 1,
     });
+  });
+});
+
+describe('side-by-side attributes', () => {
+  it('read beside and distance (on unless 0)', () => {
+    expect(readEmbedState(attrs({}))).toMatchObject({ beside: [], distance: true });
+    expect(readEmbedState(attrs({ beside: 'loop sqrt3', distance: '0' }))).toMatchObject({
+      beside: ['loop', 'sqrt3'],
+      distance: false,
+      problems: [],
+    });
+  });
+
+  it('name a bad beside as its problem and show one view', () => {
+    const state = readEmbedState(attrs({ beside: 'loop custom' }));
+    expect(state.beside).toEqual([]);
+    expect(state.problems).toEqual([{ attribute: 'beside', message: expect.stringMatching(/not "custom"\.$/) }]);
+    expect(readEmbedState(attrs({ distance: 'maybe' })).problems[0].attribute).toBe('distance');
   });
 });
 

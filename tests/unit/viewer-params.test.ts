@@ -4,7 +4,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { formatViewString, parseViewString } from '../../web/render/view-state';
-import { formatViewerParams, parseViewerParams } from '../../web/viewer/viewer-params';
+import { formatViewerParams, parseBeside, parseViewerParams } from '../../web/viewer/viewer-params';
 
 describe('view strings', () => {
   it('write nine numbers to six significant digits and read them back', () => {
@@ -95,5 +95,30 @@ describe('viewer parameters', () => {
       'src=https%3A%2F%2Fexample.org%2Fa+b.off&scheme=doo-sabin&levels=3&mode=wireframe&control-mesh=1&bbox=0&control-edges=1&triangulate=1&view=0.5%2C4%2C-2%2C0%2C0%2C0%2C0%2C0%2C1&controls=none',
     );
     expect(parseViewerParams(text)).toEqual({ params, problems: [] });
+  });
+});
+
+describe('side by side in links (beside)', () => {
+  it('reads one to three built-in schemes, by commas or spaces, and writes them with commas', () => {
+    expect(parseViewerParams('beside=loop').params.beside).toEqual(['loop']);
+    expect(parseViewerParams('beside=loop,sqrt3').params.beside).toEqual(['loop', 'sqrt3']);
+    expect(parseViewerParams('beside=loop+sqrt3++doo-sabin').params.beside).toEqual(['loop', 'sqrt3', 'doo-sabin']);
+    expect(parseViewerParams('beside=').params.beside).toBeUndefined();
+    const text = formatViewerParams({ scheme: 'catmull-clark', beside: ['quad-triangle', 'loop'] }).toString();
+    expect(text).toBe('scheme=catmull-clark&beside=quad-triangle%2Cloop');
+    expect(parseViewerParams(text).params.beside).toEqual(['quad-triangle', 'loop']);
+  });
+
+  it('names an unknown or custom scheme and more than three, and leaves beside out', () => {
+    const custom = parseViewerParams('beside=loop,custom');
+    expect(custom.params.beside).toBeUndefined();
+    expect(custom.problems).toEqual([
+      'beside takes the names of schemes with built-in rules (catmull-clark, loop, doo-sabin, sqrt3, quad-triangle, linear, linear-tri), not "custom".',
+    ]);
+    expect(parseBeside('loop butterfly').problem).toMatch(/not "butterfly"\.$/);
+    expect(parseBeside('loop,sqrt3,linear,doo-sabin')).toEqual({
+      schemes: [],
+      problem: 'beside takes at most 3 schemes, not 4.',
+    });
   });
 });

@@ -265,6 +265,16 @@ export class AppShell {
       openUrl: (src) => this.openUrl(src, src),
       setScheme: (scheme) => this.setScheme(scheme),
       subdivide: () => this.subdivide(),
+      beside: () => this.sideBySide.beside(),
+      setBeside: (schemes) => this.sideBySide.setBeside(schemes),
+      onBesideChange: (listener) => {
+        let last = '';
+        this.sideBySide.onChange(() => {
+          const now = this.sideBySide.beside().join(',');
+          if (now !== last) listener();
+          last = now;
+        });
+      },
       linkProblems: (problems) =>
         this.notice.show(problems.length > 0 ? `Parts of this link were ignored: ${problems.join(' ')}` : ''),
     });

@@ -80,6 +80,7 @@ export function elementSnippet(params: ViewerParams, subject: EmbedSubject): str
   }
   if (p.triangulate) add('triangulate');
   if (p.view) add('view', formatViewString(p.view));
+  if (p.beside && p.beside.length > 0) add('beside', p.beside.join(' '));
   add('controls', 'minimal');
   add('alt', describeView(p, subject));
   const script = `<script type="module" src="${escapeAttribute(`${subject.appBase}embed/subdiv-viewer.js`)}"></script>`;

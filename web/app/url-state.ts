@@ -1,6 +1,6 @@
 /**
  * The app's state in the URL hash: model source, scheme, shown level, render
- * mode, overlays and camera, in the encoding of viewer-params.ts (the one a
+ * mode, overlays, camera and the schemes side by side, in the encoding of viewer-params.ts (the one a
  * share link, the iframe route and `<subdiv-viewer>` read). Model, scheme and
  * level changes push a history entry, so Back returns to them; camera, mode
  * and overlay changes replace the current one. Both are debounced, so a drag
@@ -49,6 +49,10 @@ export interface UrlStateHost {
   subdivide(): Promise<boolean>;
   /** Shows the values of a link that were ignored (an empty list hides the message). */
   linkProblems(problems: string[]): void;
+  /** The schemes shown side by side beside the viewer's (none: one view), and their change. */
+  beside(): SchemeName[];
+  setBeside(schemes: SchemeName[]): void;
+  onBesideChange(listener: () => void): void;
 }
 
 /** The state of `viewer` as link parameters: only overlays not in their default state; level and camera only with a model. */
@@ -109,6 +113,7 @@ export class UrlState {
   start(): Promise<void> {
     this.host.viewer.onChange(() => this.schedule());
     this.host.viewer.onViewChange(() => this.schedule());
+    this.host.onBesideChange(() => this.schedule());
     const onNavigate = () => {
       const hash = this.currentHash();
       if (hash !== this.written && hash !== this.applying) void this.restore(false);
@@ -121,7 +126,9 @@ export class UrlState {
   /** The state as link parameters (what the hash holds once written). */
   params(): ViewerParams {
     const { viewer } = this.host;
-    return paramsOfState(viewer.state, this.host.modelSrc(), viewer.getView());
+    const params = paramsOfState(viewer.state, this.host.modelSrc(), viewer.getView());
+    const beside = this.host.beside();
+    return beside.length > 0 ? { ...params, beside } : params;
   }
 
   /** Writes the state now (replacing the current entry when `replace`). */
@@ -189,6 +196,8 @@ export class UrlState {
       if (viewer.state.scheme !== scheme) host.setScheme(scheme);
       // A link without the key was made without triangulation (it is written only when on).
       viewer.setTriangulate(params.triangulate ?? false);
+      // The panes first: with levels together, they follow the viewer's steps.
+      host.setBeside(params.beside ?? []);
       if (haveModel) await this.stepTo(params.levels ?? 0, stale);
       if (stale()) return;
       viewer.setRenderMode(params.renderMode ?? DEFAULT_RENDER_MODE);

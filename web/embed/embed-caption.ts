@@ -28,15 +28,16 @@ export class EmbedCaption {
   private readonly low: HTMLElement;
   private readonly high: HTMLElement;
 
-  constructor() {
+  /** `part`: the caption's part name (`tool`, `distance`); `barLabel` describes its colour bar. */
+  constructor(part = 'tool', barLabel?: string) {
     this.line = el('p', { className: 'tool-line' });
     this.note = el('p', { className: 'tool-note' });
     this.low = el('span');
     this.high = el('span');
-    this.legend = el('div', { className: 'tool-legend' }, this.low, influenceBar('tool-bar'), this.high);
+    this.legend = el('div', { className: 'tool-legend' }, this.low, influenceBar('tool-bar', barLabel), this.high);
     this.element = el(
       'div',
-      { className: 'tool', attrs: { part: 'tool', 'aria-live': 'polite' } },
+      { className: 'tool', attrs: { part, 'aria-live': 'polite' } },
       this.line,
       this.legend,
       this.note,

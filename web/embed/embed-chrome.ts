@@ -2,7 +2,8 @@
  * What `<subdiv-viewer>` shows around the picture, in its shadow root: the
  * stage the viewer draws into, a placeholder before the model, the message
  * of the last failure, the busy box with Cancel, a live region for screen
- * readers, and below it the teaching tool's caption and the control bar.
+ * readers, the panes beside it (side by side), and below them the teaching
+ * tool's and the distance's captions and the control bar.
  */
 import { el } from '../ui/dom';
 import type { EmbedCaption } from './embed-caption';
@@ -12,13 +13,18 @@ import { EMBED_CSS } from './embed-styles';
 export class EmbedChrome {
   /** The viewer's container. */
   readonly stage: HTMLElement;
+  /** The stage and, side by side, the panes beside it (part `panes`). */
+  private readonly panes: HTMLElement;
+  /** Each pane's label (scheme and level), the stage's first. */
+  private readonly labels: HTMLElement[] = [];
   private readonly placeholder: HTMLElement;
   private readonly message: HTMLElement;
   private readonly status: HTMLElement;
   private readonly busyBox: HTMLElement;
   private readonly busyLabel: HTMLElement;
 
-  constructor(root: ShadowRoot, controls: EmbedControls, caption: EmbedCaption, onCancel: () => void) {
+  /** `captions`: the rows between the picture and the controls (the tool's, the distance's). */
+  constructor(root: ShadowRoot, controls: EmbedControls, captions: EmbedCaption[], onCancel: () => void) {
     const style = document.createElement('style');
     style.textContent = EMBED_CSS;
     this.stage = el('div', { className: 'stage', attrs: { part: 'stage', role: 'region' } });
@@ -31,8 +37,39 @@ export class EmbedChrome {
     cancel.addEventListener('click', onCancel);
     this.busyBox = el('div', { className: 'busy', attrs: { part: 'progress' } }, this.busyLabel, cancel);
     this.busyBox.hidden = true;
-    this.stage.append(this.placeholder, this.message, this.busyBox, this.status);
-    root.append(style, el('div', { className: 'frame' }, this.stage, caption.element, controls.element));
+    this.labels.push(el('div', { className: 'pane-label', attrs: { part: 'pane-label' } }));
+    this.labels[0].hidden = true;
+    this.stage.append(this.placeholder, this.message, this.busyBox, this.status, this.labels[0]);
+    this.panes = el('div', { className: 'panes', attrs: { part: 'panes', 'data-count': '1' } }, this.stage);
+    root.append(
+      style,
+      el('div', { className: 'frame' }, this.panes, ...captions.map((c) => c.element), controls.element),
+    );
+  }
+
+  /** A pane beside the others (index 1 or more): the element its viewer draws in. */
+  addPane(index: number): HTMLElement {
+    const view = el('div', { className: 'pane-view' });
+    const label = el('div', { className: 'pane-label', attrs: { part: 'pane-label' } });
+    this.labels[index] = label;
+    this.panes.append(el('div', { className: 'pane', attrs: { part: 'pane' } }, view, label));
+    this.panes.dataset.count = String(this.panes.children.length);
+    return view;
+  }
+
+  removePane(index: number): void {
+    this.panes.children[index]?.remove();
+    this.labels.length = index;
+    this.panes.dataset.count = String(this.panes.children.length);
+  }
+
+  /** Each pane's label (scheme, level), the first's shown only beside others. */
+  setPaneLabels(texts: string[]): void {
+    texts.forEach((text, i) => {
+      const label = this.labels[i];
+      if (label && label.textContent !== text) label.textContent = text;
+    });
+    this.labels[0].hidden = texts.length < 2;
   }
 
   /** The stage's accessible name. */

@@ -57,6 +57,18 @@ export interface BasisDetail {
   max: number;
 }
 
+/** `detail` of `distance` (attribute beside): the symmetric Hausdorff distance between the first two panes' surfaces. */
+export interface DistanceDetail {
+  distance: number;
+  /** `distance` as a share of `diagonal`, the bounding-box diagonal of both surfaces. */
+  relative: number;
+  diagonal: number;
+  /** The distance is within this of the true one (CGAL's bounded-error algorithm). */
+  errorBound: number;
+  schemes: [string, string];
+  levels: [number, number];
+}
+
 /** A bad attribute value. */
 export class AttributeError extends Error {}
 

@@ -35,7 +35,15 @@ export type EmbedCommand =
 const OVERLAY_ATTRIBUTES: readonly string[] = Object.values(OVERLAY_KEYS);
 export type OverlayAttribute = (typeof OVERLAY_KEYS)[keyof typeof OVERLAY_KEYS];
 
-export type EmbedEventName = 'ready' | 'load' | 'level-change' | 'error' | 'progress' | 'stencil' | 'basis';
+export type EmbedEventName =
+  | 'ready'
+  | 'load'
+  | 'level-change'
+  | 'error'
+  | 'progress'
+  | 'stencil'
+  | 'basis'
+  | 'distance';
 
 /** An event as posted to the parent: the element's event detail plus its name. */
 export type EmbedEventMessage = { subdivlab: EmbedEventName } & Record<string, unknown>;

@@ -12,6 +12,7 @@ import {
   type ControlsMode,
   MAX_PARAM_LEVELS,
   OVERLAY_KEYS,
+  parseBeside,
   parseFlag,
   parseLevels,
 } from '../viewer/viewer-params';
@@ -35,6 +36,10 @@ export interface EmbedState {
   vertex: number | null;
   /** Split, then smooth: 0 the split alone … 1 the smoothed level. */
   split: number;
+  /** Schemes in panes beside the viewer's own (side by side), empty for none. */
+  beside: SchemeName[];
+  /** Side by side: the Hausdorff distance between the first two panes, and their colours by it. */
+  distance: boolean;
   problems: { attribute: string; message: string }[];
 }
 
@@ -139,6 +144,13 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     if (t >= 0 && t <= 1) split = t;
     else problems.push({ attribute: 'split', message: `split must be a number from 0 to 1, not "${splitText}".` });
   }
+  const besideText = attr('beside');
+  let beside: SchemeName[] = [];
+  if (besideText !== null) {
+    const parsed = parseBeside(besideText);
+    if (parsed.problem) problems.push({ attribute: 'beside', message: parsed.problem });
+    beside = parsed.schemes;
+  }
   return {
     src: attr('src')?.trim() ?? '',
     scheme,
@@ -160,6 +172,8 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     tool,
     vertex,
     split,
+    beside,
+    distance: flag('distance', true),
     problems,
   };
 }

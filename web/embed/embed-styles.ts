@@ -19,7 +19,18 @@ export const EMBED_CSS = `
 :host([background]) { background: transparent; }
 :host(:focus-visible) { outline: 3px solid #2563eb; outline-offset: 2px; }
 .frame { position: absolute; inset: 0; display: flex; flex-direction: column; container-type: inline-size; }
-.stage { position: relative; flex: 1 1 auto; min-height: 0; }
+.panes {
+  flex: 1 1 auto; min-height: 0; display: grid; grid-template-columns: minmax(0, 1fr);
+  grid-auto-rows: minmax(0, 1fr); gap: 2px; background: #d6dbe1;
+}
+.panes[data-count="2"], .panes[data-count="4"] { grid-template-columns: repeat(2, minmax(0, 1fr)); }
+.panes[data-count="3"] { grid-template-columns: repeat(3, minmax(0, 1fr)); }
+.stage, .pane { position: relative; min-height: 0; min-width: 0; overflow: hidden; }
+.pane-view { position: absolute; inset: 0; }
+.pane-label {
+  position: absolute; left: 6px; bottom: 6px; padding: 1px 6px; border-radius: 4px; font-size: 12px;
+  background: rgba(255, 255, 255, 0.88); border: 1px solid #d6dbe1; pointer-events: none;
+}
 .stage:focus-visible { outline: 3px solid #2563eb; outline-offset: -3px; }
 .bar {
   display: flex; flex-wrap: wrap; align-items: center; gap: 6px;
@@ -71,7 +82,8 @@ export const EMBED_CSS = `
 }
 @media (prefers-color-scheme: dark) {
   :host { color: #e4e7eb; background: #1f2328; }
-  .bar, .busy, .tool { background: rgba(31, 35, 40, 0.92); border-color: #3e4650; }
+  .bar, .busy, .tool, .pane-label { background: rgba(31, 35, 40, 0.92); border-color: #3e4650; }
+  .panes { background: #3e4650; }
   .tool-line.hint, .tool-note, .tool-legend { color: #aab3bd; }
   .bar button, .bar select { background: #2b3036; border-color: #56606b; }
   .facts, .placeholder { color: #aab3bd; }

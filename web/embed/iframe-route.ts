@@ -1,6 +1,6 @@
 /**
  * embed.html: one `<subdiv-viewer>` filling the page, started from the
- * query (`?src=…&scheme=…&levels=…&mode=…&view=…&controls=…&tool=…`), for learning
+ * query (`?src=…&scheme=…&levels=…&mode=…&view=…&controls=…&tool=…&beside=…`), for learning
  * platforms that accept only iframes. It posts the element's events to the
  * parent page and takes commands from it (embed-messages.ts).
  */
@@ -25,8 +25,9 @@ if (params.triangulate) viewer.setAttribute('triangulate', '');
 if (params.view) viewer.setAttribute('view', formatViewString(params.view));
 if (params.rules) viewer.setAttribute('rules', params.rules);
 viewer.setAttribute('controls', params.controls ?? 'minimal');
+if (params.beside) viewer.setAttribute('beside', params.beside.join(' '));
 // Read by the element, which names a bad value in an `error` event (posted to the parent).
-for (const key of ['alt', 'background', 'tool', 'vertex', 'split']) {
+for (const key of ['alt', 'background', 'tool', 'vertex', 'split', 'distance']) {
   const value = query.get(key);
   if (value !== null) viewer.setAttribute(key, value);
 }
@@ -39,7 +40,7 @@ function post(name: EmbedEventName, detail: object): void {
   window.parent.postMessage({ subdivlab: name, ...detail } satisfies EmbedEventMessage, '*');
 }
 
-for (const name of ['load', 'level-change', 'error', 'progress', 'stencil', 'basis'] as const) {
+for (const name of ['load', 'level-change', 'error', 'progress', 'stencil', 'basis', 'distance'] as const) {
   viewer.addEventListener(name, (event) => post(name, (event as CustomEvent).detail ?? {}));
 }
 for (const problem of problems) post('error', { code: 'invalid_argument', message: problem, line: 0, source: 'query' });

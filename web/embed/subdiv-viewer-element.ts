@@ -28,6 +28,7 @@ import { EmbedChrome } from './embed-chrome';
 import { EmbedControls } from './embed-controls';
 import { whenFar, whenNear } from './embed-distance';
 import { errorDetail, type LevelChangeDetail, type LoadDetail, type ProgressDetail } from './embed-events';
+import { EmbedPanes } from './embed-panes';
 import { EmbedSync } from './embed-sync';
 import { EmbedTools } from './embed-tools';
 import { OBSERVED_ATTRIBUTES, ViewerAttributes } from './viewer-attributes';
@@ -45,6 +46,8 @@ const DISPLAY_ATTRIBUTES = new Set([
   'tool',
   'vertex',
   'split',
+  'beside',
+  'distance',
 ]);
 
 export class SubdivViewerElement extends ViewerAttributes {
@@ -54,6 +57,11 @@ export class SubdivViewerElement extends ViewerAttributes {
   private tools: EmbedTools | null = null;
   private readonly controlBar: EmbedControls;
   private readonly caption = new EmbedCaption();
+  private readonly distanceCaption = new EmbedCaption(
+    'distance',
+    'colour bar: on the other surface (dark) to the Hausdorff distance (yellow)',
+  );
+  private panes: EmbedPanes | null = null;
   private readonly chrome: EmbedChrome;
   /** Stop watching the distance to the viewport (start, release). */
   private unwatch: (() => void)[] = [];
@@ -94,7 +102,7 @@ export class SubdivViewerElement extends ViewerAttributes {
       play: () => this.tools?.play(),
     });
     const root = this.attachShadow({ mode: 'open' });
-    this.chrome = new EmbedChrome(root, this.controlBar, this.caption, () => this.cancel());
+    this.chrome = new EmbedChrome(root, this.controlBar, [this.caption, this.distanceCaption], () => this.cancel());
     this.installKeys();
     this.darkQuery.addEventListener('change', () => this.applyDisplay());
   }
@@ -117,6 +125,8 @@ export class SubdivViewerElement extends ViewerAttributes {
       if (this.isConnected || !this.viewer) return;
       for (const stop of this.unwatch.splice(0)) stop();
       this.sync.reset();
+      this.panes?.dispose();
+      this.panes = null;
       this.viewer.dispose();
       this.viewer = null;
       this.tools = null;
@@ -230,6 +240,7 @@ export class SubdivViewerElement extends ViewerAttributes {
   cancel(): void {
     this.sync.cancel();
     this.viewer?.cancel();
+    this.panes?.cancel();
     if (this.level < 0) this.chrome.setPlaceholder('Loading stopped.');
   }
 
@@ -268,17 +279,29 @@ export class SubdivViewerElement extends ViewerAttributes {
       this.caption,
       this.controlBar,
     );
+    this.panes = new EmbedPanes(
+      viewer,
+      {
+        readState: () => this.readState(),
+        fail: (error) => this.fail(viewer.state.modelName ?? 'mesh', error),
+        dispatch: (type, detail) => this.dispatch(type, detail),
+      },
+      this.chrome,
+      this.distanceCaption,
+    );
     this.controlBar.update(viewer.state);
     this.unwatch.push(
       whenFar(
         this,
         () => {
           viewer.releaseGpu();
+          this.panes?.releaseGpu(true);
           this.gpuReleasedFlag = true;
         },
         () => {
           this.gpuReleasedFlag = false;
           viewer.view.requestRender();
+          this.panes?.releaseGpu(false);
         },
       ),
     );
@@ -312,6 +335,7 @@ export class SubdivViewerElement extends ViewerAttributes {
     const dark = this.darkQuery.matches;
     const background = want.background ?? (dark ? VIEW_COLORS.backgroundDark : VIEW_COLORS.background);
     viewer.view.setBackground(background === 'transparent' ? null : background, dark);
+    this.panes?.apply(background === 'transparent' ? null : background, dark);
     if (applyView && want.view && viewer.state.levelCount > 0) viewer.setView(want.view);
     this.tools?.apply();
   }

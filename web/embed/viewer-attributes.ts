@@ -28,6 +28,8 @@ const PROPERTIES = {
   tool: 'tool',
   vertex: 'vertex',
   split: 'split',
+  beside: 'beside',
+  distance: 'distance',
 } as const;
 
 /** The attributes the element observes. */
@@ -134,6 +136,22 @@ export class ViewerAttributes extends HTMLElement {
   set vertex(value: number | null) {
     if (value === null) this.removeAttribute('vertex');
     else this.setAttribute('vertex', String(value));
+  }
+  /** Schemes shown side by side in panes beside this one (set an empty list to remove the attribute). */
+  get beside(): SchemeName[] {
+    return this.readState().beside;
+  }
+  set beside(value: readonly SchemeName[] | string) {
+    const text = typeof value === 'string' ? value : value.join(' ');
+    if (text.trim() === '') this.removeAttribute('beside');
+    else this.setAttribute('beside', text);
+  }
+  /** Side by side: the Hausdorff distance of the first two panes and their colours by it (on unless distance="0"). */
+  get distance(): boolean {
+    return this.readState().distance;
+  }
+  set distance(value: boolean) {
+    this.setAttribute('distance', value ? '1' : '0');
   }
   /** Split, then smooth: 0 (the split alone) to 1 (the smoothed level). */
   get split(): number {

@@ -15,22 +15,9 @@ import { CancelledError } from '../core/worker-client';
 import { influenceColors } from '../render/level-graphics';
 import type { ViewState } from '../render/view-state';
 import { messageOf } from '../viewer/error-message';
-import { schemeInfo } from '../viewer/scheme-info';
+import { PANE_SCHEMES, schemeInfo } from '../viewer/scheme-info';
 import type { SubdivViewer, ViewerState } from '../viewer/subdiv-viewer';
-
-/** At most this many panes. */
-export const MAX_PANES = 4;
-
-/** Schemes a pane offers (the custom scheme needs the rules panel, which belongs to the first pane). */
-export const PANE_SCHEMES: readonly SchemeName[] = [
-  'catmull-clark',
-  'loop',
-  'sqrt3',
-  'doo-sabin',
-  'quad-triangle',
-  'linear',
-  'linear-tri',
-];
+import { MAX_PANES } from '../viewer/viewer-params';
 
 /** What a new pane shows beside a scheme: its classic comparison first, then the others in order. */
 const COMPANIONS: Partial<Record<SchemeName, SchemeName[]>> = {
@@ -40,6 +27,11 @@ const COMPANIONS: Partial<Record<SchemeName, SchemeName[]>> = {
   'doo-sabin': ['catmull-clark', 'loop'],
   'quad-triangle': ['catmull-clark', 'loop'],
 };
+
+/** A distance as the tools write it: four significant digits. */
+export function distanceText(d: number): string {
+  return d === 0 ? '0' : d.toPrecision(4);
+}
 
 /** The place of the extra panes in the page: a viewer in pane `index` (1 or more), and its removal. */
 export interface PaneHost {
@@ -158,10 +150,27 @@ export class SideBySide {
     const n = Math.min(Math.max(Math.round(count), 1), MAX_PANES);
     while (1 + this.extra.length > n) this.removeLast();
     while (1 + this.extra.length < n) this.addPane();
-    this.pair = [Math.min(this.pair[0], n - 1), Math.min(this.pair[1], n - 1)];
-    if (this.pair[0] === this.pair[1]) this.pair = [0, n > 1 ? 1 : 0];
+    this.keepPair();
     this.remeasure();
     this.emit();
+  }
+
+  /** Shows `schemes` in the panes beside the first, in order (none: side by side off). */
+  setBeside(schemes: readonly SchemeName[]): void {
+    const wanted = schemes.slice(0, MAX_PANES - 1);
+    while (this.extra.length > wanted.length) this.removeLast();
+    wanted.forEach((scheme, i) => {
+      if (i < this.extra.length) this.setScheme(i + 1, scheme);
+      else this.addPane(scheme);
+    });
+    this.keepPair();
+    this.remeasure();
+    this.emit();
+  }
+
+  /** The schemes of the panes beside the first. */
+  beside(): SchemeName[] {
+    return this.extra.map((p) => p.scheme);
   }
 
   /** Pane `index` (1 or more) shows `scheme`: its levels are computed again up to the level it showed. */
@@ -219,11 +228,19 @@ export class SideBySide {
     this.emit();
   }
 
-  private addPane(): void {
+  /** The measured pair stays two different panes that exist. */
+  private keepPair(): void {
+    const n = 1 + this.extra.length;
+    this.pair = [Math.min(this.pair[0], n - 1), Math.min(this.pair[1], n - 1)];
+    if (this.pair[0] === this.pair[1]) this.pair = [0, n > 1 ? 1 : 0];
+  }
+
+  /** A pane beside the others, showing `scheme` (default: one the others do not show, the classic comparison first). */
+  private addPane(chosen?: SchemeName): void {
     const index = 1 + this.extra.length;
     const used = new Set([this.main.state.scheme, ...this.extra.map((p) => p.scheme)]);
     const preferred = COMPANIONS[this.main.state.scheme] ?? [];
-    const scheme = [...preferred, ...PANE_SCHEMES].find((s) => !used.has(s)) ?? 'loop';
+    const scheme = chosen ?? [...preferred, ...PANE_SCHEMES].find((s) => !used.has(s)) ?? 'loop';
     const viewer = this.host.addPane(index);
     viewer.setScheme(scheme);
     viewer.setTriangulate(schemeInfo(scheme).needsTriangles);

@@ -6,8 +6,8 @@
  * apart, and says why a level is missing.
  */
 import type { SchemeName } from '../core/mesh';
-import { PANE_SCHEMES, type PaneState, type SideBySideState } from '../teach/side-by-side';
-import { schemeInfo } from '../viewer/scheme-info';
+import type { PaneState, SideBySideState } from '../teach/side-by-side';
+import { PANE_SCHEMES, schemeInfo } from '../viewer/scheme-info';
 import { button, el } from './dom';
 import { faceTypes } from './facts-panel';
 

@@ -3,8 +3,9 @@
  * panes are measured, the colours by distance, and the measured symmetric
  * Hausdorff distance with its share of the diagonal and its colour bar.
  */
-import { MAX_PANES, type SideBySideState } from '../teach/side-by-side';
+import { distanceText, type SideBySideState } from '../teach/side-by-side';
 import { schemeInfo } from '../viewer/scheme-info';
+import { MAX_PANES } from '../viewer/viewer-params';
 import { el, section, uniqueId } from './dom';
 import { type LabelledBar, labelledInfluenceBar } from './influence-bar';
 
@@ -13,11 +14,6 @@ export interface SidePanelHandlers {
   onTogether: (together: boolean) => void;
   onPair: (a: number, b: number) => void;
   onColours: (on: boolean) => void;
-}
-
-/** A distance in the panel: four significant digits. */
-export function distanceText(d: number): string {
-  return d === 0 ? '0' : d.toPrecision(4);
 }
 
 export class SidePanel {

@@ -39,6 +39,9 @@ const INFO = new Map<string, SchemeInfo>(
 /** Every scheme, in the order the core lists them. */
 export const SCHEME_NAMES = SCHEME_TABLE.schemes.map((s) => s.name) as readonly SchemeName[];
 
+/** Schemes a side-by-side pane can show: all but the custom scheme, whose rules belong to the first pane. */
+export const PANE_SCHEMES = SCHEME_NAMES.filter((s) => !INFO.get(s)?.needsRules);
+
 /** True when `name` is one of {@link SCHEME_NAMES}. */
 export function isSchemeName(name: string): name is SchemeName {
   return INFO.has(name);

@@ -8,7 +8,7 @@
 import type { SchemeName } from '../core/mesh';
 import { OVERLAY_NAMES, type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { formatViewString, parseViewString, type ViewState } from '../render/view-state';
-import { isSchemeName } from './scheme-info';
+import { isSchemeName, PANE_SCHEMES } from './scheme-info';
 
 /** Which controls an embedded viewer shows: none, a level stepper and scheme menu, or all of them. */
 export type ControlsMode = 'none' | 'minimal' | 'full';
@@ -17,6 +17,9 @@ export const CONTROLS_MODES: readonly ControlsMode[] = ['none', 'minimal', 'full
 
 /** Most levels a link or attribute may ask for; the core still refuses a run that would not fit. */
 export const MAX_PARAM_LEVELS = 8;
+
+/** Most panes side by side: the viewer's own and three beside it. */
+export const MAX_PANES = 4;
 
 export interface ViewerParams {
   /** URL of the mesh (http or https, absolute or relative to the page). */
@@ -32,6 +35,8 @@ export interface ViewerParams {
   /** URL of a rule-set JSON (scheme `custom`). */
   rules?: string;
   controls?: ControlsMode;
+  /** Schemes shown side by side with `scheme`, in panes beside it (one to three). */
+  beside?: SchemeName[];
 }
 
 /** Parameter names in links; the element's attributes use the same names, except `render-mode` for `mode`. */
@@ -44,6 +49,7 @@ export const PARAM_KEYS = {
   view: 'view',
   rules: 'rules',
   controls: 'controls',
+  beside: 'beside',
 } as const;
 
 /** The link/attribute name of each overlay. */
@@ -67,6 +73,26 @@ export function parseLevels(value: string): number | null {
   if (!/^\s*\d+\s*$/.test(value)) return null;
   const n = Number(value);
   return n <= MAX_PARAM_LEVELS ? n : null;
+}
+
+/**
+ * Reads `beside`: one to three scheme names (not custom, whose rules belong
+ * to the first pane), separated by commas or spaces; an empty value is none.
+ */
+export function parseBeside(value: string): { schemes: SchemeName[]; problem: string | null } {
+  const names = value.split(/[\s,]+/).filter((n) => n !== '');
+  const unknown = names.filter((n) => !(PANE_SCHEMES as readonly string[]).includes(n));
+  if (unknown.length > 0) {
+    const what = unknown.map((n) => `"${n}"`).join(', ');
+    return {
+      schemes: [],
+      problem: `beside takes the names of schemes with built-in rules (${PANE_SCHEMES.join(', ')}), not ${what}.`,
+    };
+  }
+  if (names.length > MAX_PANES - 1) {
+    return { schemes: [], problem: `beside takes at most ${MAX_PANES - 1} schemes, not ${names.length}.` };
+  }
+  return { schemes: names as SchemeName[], problem: null };
 }
 
 export interface ParsedParams {
@@ -126,6 +152,12 @@ export function parseViewerParams(text: string | URLSearchParams): ParsedParams 
     if ((CONTROLS_MODES as readonly string[]).includes(controls)) params.controls = controls as ControlsMode;
     else problems.push(`controls must be none, minimal or full, not "${controls}".`);
   }
+  const beside = get(PARAM_KEYS.beside);
+  if (beside !== null) {
+    const { schemes, problem } = parseBeside(beside);
+    if (problem) problems.push(problem);
+    else if (schemes.length > 0) params.beside = schemes;
+  }
   return { params, problems };
 }
 
@@ -144,5 +176,6 @@ export function formatViewerParams(params: ViewerParams): URLSearchParams {
   if (params.rules) query.set(PARAM_KEYS.rules, params.rules);
   if (params.view) query.set(PARAM_KEYS.view, formatViewString(params.view));
   if (params.controls) query.set(PARAM_KEYS.controls, params.controls);
+  if (params.beside && params.beside.length > 0) query.set(PARAM_KEYS.beside, params.beside.join(','));
   return query;
 }
