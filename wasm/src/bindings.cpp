@@ -29,6 +29,7 @@
 
 #include "core/compare.h"
 #include "core/hausdorff.h"
+#include "core/inspect.h"
 #include "core/level_view.h"
 #include "core/mesh_facts.h"
 #include "core/mesh_io.h"
@@ -586,6 +587,79 @@ val js_hausdorff_distance(const val& a, const val& b, bool vertex_distances) {
   });
 }
 
+val to_js_xyz(const std::array<double, 3>& p) {
+  val out = val::array();
+  for (double x : p) out.call<void>("push", x);
+  return out;
+}
+
+/// inspect_mesh (inspect.h): the measures and each computation asked for,
+/// with its milliseconds.
+val js_inspect_mesh(const val& mesh, bool self_intersections, bool sphere,
+                    bool hull, bool width, double max_pairs) {
+  return guarded([&] {
+    Inspect_options o;
+    o.self_intersections = self_intersections;
+    o.sphere = sphere;
+    o.hull = hull;
+    o.width = width;
+    o.max_pairs = static_cast<std::size_t>(std::max(0.0, max_pairs));
+    const Result<Inspection> r = inspect_mesh(from_js_mesh(mesh), o);
+    if (!r.ok()) return to_js_status(r.status);
+    const Inspection& i = r.value;
+    val out = ok_object();
+    val m = val::object();
+    m.set("area", i.measures.area);
+    m.set("volume", i.measures.volume);
+    m.set("closed", i.measures.closed);
+    m.set("bboxMin", to_js_xyz(i.measures.bbox_min));
+    m.set("bboxMax", to_js_xyz(i.measures.bbox_max));
+    m.set("diagonal", i.measures.diagonal);
+    m.set("ms", i.measures.ms);
+    out.set("measures", m);
+    if (i.has_self_intersections) {
+      val x = val::object();
+      x.set("pairs", static_cast<double>(i.self_intersections.pairs));
+      x.set("firstPairs",
+            to_js_array("Uint32Array", i.self_intersections.first_pairs));
+      x.set("faces", to_js_array("Uint32Array", i.self_intersections.faces));
+      x.set("ms", i.self_intersections.ms);
+      out.set("selfIntersections", x);
+    }
+    if (i.has_sphere) {
+      val x = val::object();
+      x.set("center", to_js_xyz(i.sphere.center));
+      x.set("radius", i.sphere.radius);
+      x.set("ms", i.sphere.ms);
+      out.set("sphere", x);
+    }
+    if (i.has_hull) {
+      val x = val::object();
+      x.set("vertices", static_cast<double>(i.hull.vertices));
+      x.set("edges", static_cast<double>(i.hull.edges));
+      x.set("faces", static_cast<double>(i.hull.faces));
+      x.set("area", i.hull.area);
+      x.set("volume", i.hull.volume);
+      x.set("positions", to_js_array("Float64Array", i.hull.positions));
+      x.set("triangles", to_js_array("Uint32Array", i.hull.triangles));
+      x.set("ms", i.hull.ms);
+      out.set("hull", x);
+    }
+    if (i.has_width) {
+      val x = val::object();
+      x.set("skipped", i.width.skipped);
+      x.set("width", i.width.width);
+      x.set("normal", to_js_xyz(i.width.normal));
+      val offsets = val::array();
+      for (double d : i.width.offsets) offsets.call<void>("push", d);
+      x.set("offsets", offsets);
+      x.set("ms", i.width.ms);
+      out.set("width", x);
+    }
+    return out;
+  });
+}
+
 val js_predict_size(const val& mesh, const val& js_options) {
   return guarded([&] {
     const Mesh_buffers in = from_js_mesh(mesh);
@@ -849,6 +923,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("step_stencils", &subdivlab::js_step_stencils);
   emscripten::function("compare_meshes", &subdivlab::js_compare_meshes);
   emscripten::function("hausdorff_distance", &subdivlab::js_hausdorff_distance);
+  emscripten::function("inspect_mesh", &subdivlab::js_inspect_mesh);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

@@ -8,6 +8,8 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
        subdiv stencil INPUT --level K --vertex I [--scheme S] [--triangulate] [--rule RULES.json] ...
        subdiv check CONTROL RESULT [--scheme S] [--levels K] [--tolerance T] [--triangulate] ...
        subdiv compare A B
+       subdiv inspect INPUT [--self-intersections] [--sphere] [--hull] [--width] [--all]
+                     [--scheme S --levels K] ...
 
   INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
   --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
@@ -47,13 +49,20 @@ subdiv compare A B prints the symmetric Hausdorff distance between the two surfa
 JSON: distance, relative (to the bounding-box diagonal of both), diagonal and errorBound
 (the distance is within it of the true one: 1e-4 of the diagonal).
 
+subdiv inspect INPUT prints, as JSON, CGAL's geometry around the mesh (or around its level K
+of --scheme S, with --levels K; default 0, the mesh as given): area, volume (closed meshes)
+and bounding box, and as asked (all of them without a choice, or with --all) the
+self-intersecting face pairs (exact predicates), the smallest enclosing sphere, the convex
+hull and the minimum width with its planes, each with the milliseconds it took. With
+--levels K, also the input's measures and the level's as shares of them.
+
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
 
 /** A command line that made sense. */
 export interface CliArgs {
-  /** `subdiv info|stencil|check|compare ...`, or the default, subdividing. */
-  command: 'subdivide' | 'info' | 'stencil' | 'check' | 'compare';
+  /** `subdiv info|stencil|check|compare|inspect ...`, or the default, subdividing. */
+  command: 'subdivide' | 'info' | 'stencil' | 'check' | 'compare' | 'inspect';
   input: string;
   scheme: string;
   levels: number;
@@ -73,6 +82,8 @@ export interface CliArgs {
   /** check: the result to check (input is the control mesh), and --tolerance. */
   result: string;
   tolerance: number;
+  /** inspect: what to compute besides the measures. */
+  inspect: { selfIntersections: boolean; sphere: boolean; hull: boolean; width: boolean };
   help: boolean;
 }
 
@@ -106,6 +117,7 @@ const NO_OPTIONS = {
   vertex: 0,
   result: '',
   tolerance: DEFAULT_TOLERANCE,
+  inspect: { selfIntersections: false, sphere: false, hull: false, width: false },
 } as const satisfies Partial<CliArgs>;
 
 /** Parses argv (without node and the script). Throws UsageError; scheme names are checked later. */
@@ -123,16 +135,19 @@ export function parseCliArgs(argv: string[]): CliArgs {
   if (positionals[0] === 'compare') return compareArgs(parsed);
   const stencil = positionals[0] === 'stencil';
   const check = positionals[0] === 'check';
-  const inputs = stencil || check ? positionals.slice(1) : positionals;
+  const inspect = positionals[0] === 'inspect';
+  const inputs = stencil || check || inspect ? positionals.slice(1) : positionals;
   if (check && inputs.length !== 2) throw new UsageError('subdiv check takes two files: CONTROL RESULT');
   if (!check && inputs.length !== 1) {
     throw new UsageError(inputs.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
   }
-  const command = stencil ? 'stencil' : check ? 'check' : 'subdivide';
+  const command = stencil ? 'stencil' : check ? 'check' : inspect ? 'inspect' : 'subdivide';
+  const computations = ['self-intersections', 'sphere', 'hull', 'width', 'all'] as const;
   const refused = {
-    stencil: ['output', 'stats', 'levels', 'tolerance'],
-    check: ['output', 'stats', 'level', 'vertex'],
-    subdivide: ['level', 'vertex', 'tolerance'],
+    stencil: ['output', 'stats', 'levels', 'tolerance', ...computations],
+    check: ['output', 'stats', 'level', 'vertex', ...computations],
+    inspect: ['output', 'stats', 'level', 'vertex', 'tolerance'],
+    subdivide: ['level', 'vertex', 'tolerance', ...computations],
   } as const;
   for (const name of refused[command]) {
     if (values[name] !== undefined) {
@@ -153,7 +168,12 @@ export function parseCliArgs(argv: string[]): CliArgs {
   if (boundary !== null && !BOUNDARIES.includes(boundary as BoundaryInterpolation)) {
     throw new UsageError(`--boundary must be edge, edge-and-corner or none, not "${boundary}"`);
   }
-  const levels = stencil ? count(values.level, '--level', 1) : count(values.levels ?? '1', '--levels', 0);
+  const levels = stencil
+    ? count(values.level, '--level', 1)
+    : count(values.levels ?? (inspect ? '0' : '1'), '--levels', 0);
+  // inspect: every computation unless some are chosen.
+  const chosen = computations.some((name) => values[name] === true);
+  const wants = (name: (typeof computations)[number]) => !chosen || values.all === true || values[name] === true;
   const vertex = stencil ? count(values.vertex, '--vertex', 0) : 0;
   const rule = values.rule ?? null;
   if (rule !== null && values.scheme !== undefined && values.scheme !== 'custom') {
@@ -176,6 +196,12 @@ export function parseCliArgs(argv: string[]): CliArgs {
     output: values.output === undefined ? null : { path: values.output, format: outputFormat(values.output) },
     stats: values.stats === true,
     vertex,
+    inspect: {
+      selfIntersections: wants('self-intersections'),
+      sphere: wants('sphere'),
+      hull: wants('hull'),
+      width: wants('width'),
+    },
     help,
   };
 }
@@ -226,6 +252,11 @@ function parse(argv: string[]) {
       boundary: { type: 'string' },
       output: { type: 'string', short: 'o' },
       stats: { type: 'boolean' },
+      'self-intersections': { type: 'boolean' },
+      sphere: { type: 'boolean' },
+      hull: { type: 'boolean' },
+      width: { type: 'boolean' },
+      all: { type: 'boolean' },
       help: { type: 'boolean', short: 'h' },
     },
   });

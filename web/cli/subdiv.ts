@@ -14,6 +14,7 @@ import {
   formatFromFileName,
   hausdorffDistance,
   hostOf,
+  inspectMesh,
   meshFacts,
   parseMesh,
   schemeNames,
@@ -189,6 +190,68 @@ async function stencil(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Pr
   }
 }
 
+/**
+ * `subdiv inspect`: CGAL's geometry around the mesh or its level K, as
+ * JSON (the hull's and pairs' arrays as counts and the first pairs).
+ */
+async function inspect(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
+  const text = readInput(args.input);
+  let control: Mesh;
+  let mesh: Mesh;
+  try {
+    control = parseMesh(text, inputFormat(args.input, text));
+    mesh = args.levels > 0 ? subdivide(control, subdivideOptions(args, rules)) : control;
+  } catch (error) {
+    throw inputError(args, error);
+  }
+  const i = inspectMesh(mesh, args.inspect);
+  const pairs = i.selfIntersections;
+  const out: Record<string, unknown> = {
+    ...(args.levels > 0 ? { scheme: args.scheme, levels: args.levels } : {}),
+    vertices: mesh.positions.length / 3,
+    faces: mesh.faceSizes.length,
+    measures: i.measures,
+    ...(pairs
+      ? {
+          selfIntersections: {
+            pairs: pairs.pairs,
+            faces: pairs.faces.length,
+            firstPairs: Array.from({ length: pairs.firstPairs.length / 2 }, (_, k) => [
+              pairs.firstPairs[2 * k],
+              pairs.firstPairs[2 * k + 1],
+            ]),
+            ms: pairs.ms,
+          },
+        }
+      : {}),
+    ...(i.sphere ? { sphere: i.sphere } : {}),
+    ...(i.hull
+      ? {
+          hull: {
+            vertices: i.hull.vertices,
+            edges: i.hull.edges,
+            faces: i.hull.faces,
+            area: i.hull.area,
+            volume: i.hull.volume,
+            ms: i.hull.ms,
+          },
+        }
+      : {}),
+    ...(i.width ? { width: i.width } : {}),
+  };
+  if (args.levels > 0) {
+    const before = inspectMesh(control).measures;
+    out.control = before;
+    const share = (a: number, b: number) => (b !== 0 ? a / b : null);
+    out.change = {
+      area: share(i.measures.area, before.area),
+      volume: i.measures.closed && before.closed ? share(i.measures.volume, before.volume) : null,
+      diagonal: share(i.measures.diagonal, before.diagonal),
+    };
+  }
+  io.stdout(`${JSON.stringify(out, null, 2)}\n`);
+}
+
 /** Thrown by `subdiv check` on a mismatch, after its report: exit status 1 without an error line. */
 class Mismatch extends Error {}
 
@@ -271,6 +334,7 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   const rules = readRules(args);
   if (args.command === 'stencil') return stencil(args, io, rules);
   if (args.command === 'check') return check(args, io, rules);
+  if (args.command === 'inspect') return inspect(args, io, rules);
   const text = readInput(args.input);
   let result: Mesh;
   let ms: number;

@@ -9,6 +9,7 @@
 
 import type { MeshComparison } from './compare';
 import createSubdivModule from './generated/subdivlab.mjs';
+import type { Inspection, InspectOptions } from './inspect';
 import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
@@ -43,6 +44,14 @@ interface CoreModule {
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   step_stencils(mesh: Mesh, options: CoreOptions): RawResult<StencilTable>;
   compare_meshes(reference: Mesh, result: Mesh, relativeTolerance: number): RawResult<MeshComparison>;
+  inspect_mesh(
+    mesh: Mesh,
+    selfIntersections: boolean,
+    sphere: boolean,
+    hull: boolean,
+    width: boolean,
+    maxPairs: number,
+  ): RawResult<Inspection>;
   hausdorff_distance(a: Mesh, b: Mesh, vertexDistances: boolean): RawResult<HausdorffDistance>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
@@ -292,6 +301,25 @@ export function hausdorffDistance(a: Mesh, b: Mesh, vertexDistances = false): Ha
     ok: true;
   };
   return h;
+}
+
+/**
+ * CGAL's geometry around `mesh` (inspect.ts): its area, volume and box,
+ * and the self-intersections, smallest enclosing sphere, convex hull and
+ * minimum width that `options` asks for.
+ */
+export function inspectMesh(mesh: Mesh, options: InspectOptions = {}): Inspection {
+  const o = options;
+  const raw = module().inspect_mesh(
+    mesh,
+    o.selfIntersections ?? false,
+    o.sphere ?? false,
+    o.hull ?? false,
+    o.width ?? false,
+    o.maxPairs ?? 100,
+  );
+  const { ok: _ok, ...inspection } = unwrap(raw) as Inspection & { ok: true };
+  return inspection;
 }
 
 /** Counts and peak heap bytes predicted for `subdivide(mesh, options)`, without subdividing. */
