@@ -6,9 +6,11 @@
  * one view, the picture is the plain one again; another model, and the
  * panes follow it.
  */
+import { readFile } from 'node:fs/promises';
 import type { SideBySideTestState } from '../../web/app/test-api';
 import { cliDistance as compareLevels } from './cli-distance';
 import { expect, test } from './fixtures';
+import { readPng } from './helpers';
 
 /** `subdiv compare` of the sample cube's Catmull-Clark and Loop levels. */
 const cliDistance = (levels: [number, number]) =>
@@ -25,13 +27,14 @@ test('Catmull-Clark beside Loop on the cube: linked panes, levels together and a
   await app.byTestId('view.save').click();
   const single = await app.canvasPixels();
   const side = () => app.page.evaluate(() => window.__subdivlab?.sideBySide() as SideBySideTestState);
-  const measured = async (levels: [number, number]) => {
+  /** The distance once measured on `levels` of pane 2's `scheme` (Loop unless said). */
+  const measured = async (levels: [number, number], scheme = 'loop') => {
     await expect
       .poll(async () => {
         const s = await side();
-        return s.measuring || !s.distance ? null : s.distance.levels;
+        return s.measuring || !s.distance ? null : [s.distance.levels, s.distance.schemes[1]];
       })
-      .toEqual(levels);
+      .toEqual([levels, scheme]);
     return (await side()).distance as NonNullable<SideBySideTestState['distance']>;
   };
 
@@ -67,6 +70,49 @@ test('Catmull-Clark beside Loop on the cube: linked panes, levels together and a
     await app.byTestId('side.colours').check();
     await expect.poll(async () => (await app.canvasPixels()).equals(plain)).toBe(false);
     await app.snapshot('side-by-side-cc-loop');
+  });
+
+  await test.step('the PNG holds both panes, labelled, side by side', async () => {
+    const [w, h] = await app.byTestId('viewer').evaluate((e) => [e.clientWidth, e.clientHeight]);
+    await app.byTestId('export-panel').locator('summary').click();
+    const download = await app.download('export.png');
+    expect(download.suggestedFilename()).toBe('cube-catmull-clark-loop-L2.png');
+    const png = readPng(await readFile(await download.path()));
+    // Two pictures of the first pane's size, 2 px apart.
+    expect([png.width, png.height]).toEqual([2 * w + 2, h]);
+  });
+
+  await test.step('quad-triangle on the all-quad cube is Catmull-Clark: the surfaces agree', async () => {
+    await app.byTestId('pane.1.scheme').selectOption('quad-triangle');
+    await expect(app.byTestId('pane.1.level')).toHaveText('level 2 · 98 vertices · 96 quads');
+    const d = await measured([2, 2], 'quad-triangle');
+    expect(Math.max(...d.farthest)).toBeLessThan(1e-12);
+    expect(d.distance).toBeLessThanOrEqual(d.errorBound);
+    await expect(app.byTestId('side.distance')).toHaveText(
+      `Hausdorff distance between Catmull-Clark level 2 and Quad/Triangle level 2: 0 (to within ${d.errorBound.toPrecision(4)}): the surfaces agree.`,
+    );
+    await app.byTestId('pane.1.scheme').selectOption('loop');
+    await measured([2, 2]);
+  });
+
+  await test.step('a basis function shows over the distance colours, which come back when it goes', async () => {
+    const distanceColours = await app.canvasPixels();
+    await app.byTestId('basis.toggle').click();
+    await app.byTestId('basis.vertex').fill('0');
+    await app.byTestId('basis.vertex').press('Enter');
+    await expect(app.byTestId('basis.reach')).toHaveText(/^Control vertex 0 reaches /);
+    await expect.poll(async () => (await app.canvasPixels()).equals(distanceColours)).toBe(false);
+    // A change of pane 2 measures again: the basis function stays on top in pane 1.
+    const basisColours = await app.canvasPixels();
+    await app.byTestId('pane.1.scheme').selectOption('sqrt3');
+    await measured([2, 2], 'sqrt3');
+    await app.byTestId('pane.1.scheme').selectOption('loop');
+    await measured([2, 2]);
+    await expect.poll(async () => (await app.canvasPixels()).equals(basisColours)).toBe(true);
+    await app.byTestId('basis.toggle').click();
+    // The control mesh the basis view showed goes off again by hand (C).
+    await app.page.keyboard.press('c');
+    await expect.poll(async () => (await app.canvasPixels()).equals(distanceColours)).toBe(true);
   });
 
   await test.step('the cameras are linked: turning pane 2 turns pane 1', async () => {

@@ -132,7 +132,11 @@ export class AppShell {
     this.firstVisitHint.hidden = true;
     this.viewer = new SubdivViewer(stage, { confirmLargeStep: (info) => this.confirmLargeStep(info) });
     this.progress = new ProgressOverlay(() => this.cancel());
-    this.exportActions = new ExportActions(this.viewer, (source, error) => this.showError(source, error));
+    this.exportActions = new ExportActions(
+      this.viewer,
+      (source, error) => this.showError(source, error),
+      () => this.sideBySide.viewers(),
+    );
     stage.append(this.emptyHint, this.firstVisitHint, this.facts.element, this.progress.element);
 
     this.scheme = new SchemePanel({
@@ -313,11 +317,11 @@ export class AppShell {
       this.scheme.element,
       this.rules.element,
       this.levels.element,
+      this.sidePanel.element,
       this.creasePanel.element,
       this.stencilPanel.element,
       this.basisPanel.element,
       this.splitPanel.element,
-      this.sidePanel.element,
       this.checkPanel.element,
       this.display.element,
       shortcutsHelp(),
@@ -439,6 +443,7 @@ export class AppShell {
           distance: d
             ? {
                 panes: d.panes,
+                schemes: d.schemes,
                 levels: d.levels,
                 distance: d.distance,
                 relative: d.relative,

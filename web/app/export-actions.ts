@@ -1,31 +1,49 @@
 /**
- * What the Export menu and Ctrl+C do: PNG, SVG, OFF/OBJ downloads named after
- * model, scheme and level, and the view as a PNG on the clipboard. Failures
+ * What the Export menu and Ctrl+C do: PNG (side by side, every pane), SVG,
+ * OFF/OBJ downloads named after model, scheme and level, and the view as a
+ * PNG on the clipboard. Failures
  * go to the shell's one error display.
  */
+import { pictureGrid } from '../render/picture-grid';
 import { saveBlob } from '../ui/save-blob';
 import { exportFileName } from '../viewer/file-names';
+import { schemeInfo } from '../viewer/scheme-info';
 import type { SubdivViewer } from '../viewer/subdiv-viewer';
 
 export class ExportActions {
+  /** `panes`: the viewers side by side (the first is `viewer`); one viewer when side by side is off. */
   constructor(
     private readonly viewer: SubdivViewer,
     private readonly showError: (source: string, error: unknown) => void,
+    private readonly panes: () => SubdivViewer[] = () => [viewer],
   ) {}
 
   async png(scale: number, transparent: boolean): Promise<void> {
     try {
-      saveBlob(await this.viewer.exportPng(scale, transparent), this.fileName('png'));
+      saveBlob(await this.picture(scale, transparent), this.fileName('png'));
     } catch (error) {
       this.showError(this.fileName('png'), error);
     }
+  }
+
+  /** The view as a PNG; side by side, every pane in its place, labelled with its scheme and level. */
+  private async picture(scale: number, transparent: boolean): Promise<Blob> {
+    const panes = this.panes();
+    if (panes.length < 2) return this.viewer.exportPng(scale, transparent);
+    const pictures = await Promise.all(
+      panes.map(async (pane) => ({
+        png: await pane.exportPng(scale, transparent),
+        label: `${schemeInfo(pane.state.scheme).label} · level ${pane.state.level}`,
+      })),
+    );
+    return pictureGrid(pictures, scale, transparent);
   }
 
   async copyImage(transparent: boolean): Promise<void> {
     if (this.viewer.state.levelCount === 0) return;
     try {
       // Hand the promise to ClipboardItem at once: Safari needs the user gesture to be current.
-      const png = this.viewer.exportPng(1, transparent);
+      const png = this.picture(1, transparent);
       await navigator.clipboard.write([new ClipboardItem({ 'image/png': png })]);
     } catch (error) {
       this.showError('Clipboard', error);
@@ -51,6 +69,8 @@ export class ExportActions {
 
   private fileName(extension: string): string {
     const s = this.viewer.state;
-    return exportFileName(s.modelName, s.scheme, s.level, extension);
+    // Side by side (the PNG): the schemes joined, cube-catmull-clark-loop-L2.png.
+    const schemes = extension === 'png' ? this.panes().map((p) => p.state.scheme) : [s.scheme];
+    return exportFileName(s.modelName, schemes.join('-'), s.level, extension);
   }
 }

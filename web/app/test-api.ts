@@ -66,6 +66,7 @@ export interface SideBySideTestState {
   /** The last distance measured: the panes and levels, the figures. */
   distance: {
     panes: [number, number];
+    schemes: [string, string];
     levels: [number, number];
     distance: number;
     relative: number;

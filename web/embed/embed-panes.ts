@@ -6,7 +6,7 @@
  * distance between the first two panes in a caption (part `distance`) and a
  * `distance` event, and both surfaces coloured by it.
  */
-import { distanceText, SideBySide, type SideBySideState } from '../teach/side-by-side';
+import { distanceText, hausdorffText, SideBySide, type SideBySideState } from '../teach/side-by-side';
 import { schemeInfo } from '../viewer/scheme-info';
 import { SubdivViewer } from '../viewer/subdiv-viewer';
 import type { EmbedCaption } from './embed-caption';
@@ -85,8 +85,9 @@ export class EmbedPanes {
         ? []
         : state.panes.map((p) => {
             const level = p.viewer.levelCount > 0 ? ` · level ${p.viewer.level}` : '';
+            const tags = p.ignoresTags ? ' · creases not applied' : '';
             const problem = p.message ? ` · ${p.message}` : '';
-            return `${schemeInfo(p.scheme).label}${level}${problem}`;
+            return `${schemeInfo(p.scheme).label}${level}${tags}${problem}`;
           }),
     );
     const d = state.distance;
@@ -102,8 +103,8 @@ export class EmbedPanes {
     const names = d.panes.map((p, i) => `${schemeInfo(state.panes[p]?.scheme ?? '').label} ${d.levels[i]}`);
     this.caption.show({
       line:
-        `Hausdorff distance, ${names[0]} to ${names[1]}: ${distanceText(d.distance)} ` +
-        `(${(100 * d.relative).toPrecision(3)} % of the diagonal)`,
+        `Hausdorff distance, ${names[0]} to ${names[1]}: ${hausdorffText(d)}` +
+        (d.distance > d.errorBound ? ` (${(100 * d.relative).toPrecision(3)} % of the diagonal)` : ''),
       legend: ['0', distanceText(d.distance)],
     });
     if (d === this.lastDistance) return;

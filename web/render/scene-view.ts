@@ -369,7 +369,11 @@ export class SceneView {
   /** Points the camera at `sphere` from the default direction, at a distance that shows all of it. */
   fitSphere(sphere: Sphere): void {
     this.radius = Math.max(sphere.radius, 1e-9);
-    const distance = (this.radius / Math.sin(((this.camera.fov / 2) * Math.PI) / 180)) * 1.2;
+    // The narrower of the two fields of view: a view taller than wide (a side-by-side pane,
+    // a phone held upright) sees less across than up and down.
+    const vertical = ((this.camera.fov / 2) * Math.PI) / 180;
+    const horizontal = Math.atan(Math.tan(vertical) * this.camera.aspect);
+    const distance = (this.radius / Math.sin(Math.min(vertical, horizontal))) * 1.2;
     this.controls.target.copy(sphere.center);
     this.camera.up.set(0, 1, 0);
     this.camera.position.copy(sphere.center).addScaledVector(FIT_DIRECTION, distance);

@@ -92,7 +92,7 @@ export class BasisView {
       this.vertex = null;
       this.shown = null;
       this.message = '';
-      this.viewer.setLevelColors(this.colouredLevel, null);
+      this.viewer.setLevelColors(this.colouredLevel, null, 'basis');
       this.colouredLevel = -1;
       this.viewer.view.setSelection(new Float32Array(0), new Float32Array(0));
     }
@@ -141,8 +141,8 @@ export class BasisView {
         if (Math.abs(x) > NONE) reached++;
       }
       const rgb = influenceColors(values, min, max);
-      if (this.colouredLevel !== level) this.viewer.setLevelColors(this.colouredLevel, null);
-      this.viewer.setLevelColors(level, rgb);
+      if (this.colouredLevel !== level) this.viewer.setLevelColors(this.colouredLevel, null, 'basis');
+      this.viewer.setLevelColors(level, rgb, 'basis');
       this.colouredLevel = level;
       this.colouredId = id;
       this.shown = { vertex, level, max, min, reached, count: values.length };

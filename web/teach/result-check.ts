@@ -76,13 +76,13 @@ export class ResultCheck {
    */
   private colour(level: number, c: MeshComparison): void {
     if (c.maxError <= c.tolerance) {
-      this.viewer.setLevelColors(level, null);
+      this.viewer.setLevelColors(level, null, 'check');
       return;
     }
     const count = this.viewer.buffersOf(level)?.positions.length ?? 0;
     const worst = new Float64Array(count / 3);
     for (let v = 0; v < c.errors.length; ++v) worst[c.matched[v]] = Math.max(worst[c.matched[v]], c.errors[v]);
-    this.viewer.setLevelColors(level, influenceColors(worst, 0, c.maxError));
+    this.viewer.setLevelColors(level, influenceColors(worst, 0, c.maxError), 'check');
   }
 
   private emit(): void {

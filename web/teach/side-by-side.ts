@@ -33,6 +33,16 @@ export function distanceText(d: number): string {
   return d === 0 ? '0' : d.toPrecision(4);
 }
 
+/**
+ * A measured Hausdorff distance as the tools write it: CGAL's estimate is
+ * within its error bound of the true distance, so an estimate no larger
+ * than the bound says the surfaces agree to within it (quad-triangle and
+ * Catmull-Clark on quads), not that they differ by it.
+ */
+export function hausdorffText(d: { distance: number; errorBound: number }): string {
+  return d.distance <= d.errorBound ? `0 (to within ${distanceText(d.errorBound)})` : distanceText(d.distance);
+}
+
 /** The place of the extra panes in the page: a viewer in pane `index` (1 or more), and its removal. */
 export interface PaneHost {
   addPane(index: number): SubdivViewer;
@@ -41,16 +51,19 @@ export interface PaneHost {
 
 export interface PaneState {
   scheme: SchemeName;
-  /** The scheme needs triangles: the pane triangulates the control mesh first. */
+  /** The pane triangulated the control mesh first (its scheme needs triangles, the mesh has other faces). */
   triangulated: boolean;
+  /** The model has creases or corners that this pane's scheme does not apply. */
+  ignoresTags: boolean;
   viewer: ViewerState;
   /** Why the pane does not show the level asked for (a step failed). */
   message: string;
 }
 
 export interface MeasuredDistance extends HausdorffDistance {
-  /** The two panes measured and the levels they showed. */
+  /** The two panes measured, and the schemes and levels they showed. */
   panes: [number, number];
+  schemes: [SchemeName, SchemeName];
   levels: [number, number];
   /** `distance` as a share of the diagonal. */
   relative: number;
@@ -115,18 +128,20 @@ export class SideBySide {
 
   get state(): SideBySideState {
     const main = this.main.state;
+    const tags = this.model?.tags;
+    const tagged = (tags?.creaseSharpness.length ?? 0) + (tags?.cornerSharpness.length ?? 0) > 0;
+    const polygons = this.model !== null && this.model.faceSizes.some((n) => n !== 3);
+    const pane = (scheme: SchemeName, viewer: ViewerState, message: string): PaneState => ({
+      scheme,
+      triangulated: polygons && schemeInfo(scheme).needsTriangles,
+      ignoresTags: tagged && !schemeInfo(scheme).creases,
+      viewer,
+      message,
+    });
     return {
       count: 1 + this.extra.length,
       together: this.together,
-      panes: [
-        { scheme: main.scheme, triangulated: main.triangulate, viewer: main, message: '' },
-        ...this.extra.map((p) => ({
-          scheme: p.scheme,
-          triangulated: schemeInfo(p.scheme).needsTriangles,
-          viewer: p.viewer.state,
-          message: p.message,
-        })),
-      ],
+      panes: [pane(main.scheme, main, ''), ...this.extra.map((p) => pane(p.scheme, p.viewer.state, p.message))],
       pair: [...this.pair],
       colours: this.colours,
       distance: this.distance,
@@ -211,9 +226,10 @@ export class SideBySide {
   /** Measures the distance between panes `a` and `b`. */
   setPair(a: number, b: number): void {
     const count = 1 + this.extra.length;
-    if (a === b || a < 0 || b < 0 || a >= count || b >= count) return;
-    this.pair = [a, b];
+    // Two menus: one pane in both keeps the pair it had (the panel shows it again).
+    if (a !== b && a >= 0 && b >= 0 && a < count && b < count) this.pair = [a, b];
     this.remeasure();
+    this.emit();
   }
 
   /** Colours the measured panes by each vertex's distance to the other surface, or not. */
@@ -245,6 +261,8 @@ export class SideBySide {
     viewer.setScheme(scheme);
     viewer.setTriangulate(schemeInfo(scheme).needsTriangles);
     viewer.setRenderMode(this.main.state.renderMode);
+    for (const [name, on] of Object.entries(this.main.state.overlays) as [keyof ViewerState['overlays'], boolean][])
+      viewer.setOverlay(name, on);
     const pane: ExtraPane = {
       viewer,
       scheme,
@@ -288,8 +306,13 @@ export class SideBySide {
     } else if (this.together && !main.busy) {
       for (const pane of this.extra) if (pane.viewer.state.level !== main.level) void this.reach(pane);
     }
-    for (const pane of this.extra)
-      if (pane.viewer.state.renderMode !== main.renderMode) pane.viewer.setRenderMode(main.renderMode);
+    // The display follows the first pane: render mode and overlays.
+    for (const pane of this.extra) {
+      const state = pane.viewer.state;
+      if (state.renderMode !== main.renderMode) pane.viewer.setRenderMode(main.renderMode);
+      for (const [name, on] of Object.entries(main.overlays) as [keyof typeof main.overlays, boolean][])
+        if (state.overlays[name] !== on) pane.viewer.setOverlay(name, on);
+    }
     this.remeasure();
     this.emit();
   }
@@ -376,7 +399,8 @@ export class SideBySide {
     }
   }
 
-  private viewers(): SubdivViewer[] {
+  /** Every pane's viewer, the page's own first. */
+  viewers(): SubdivViewer[] {
     return [this.main, ...this.extra.map((p) => p.viewer)];
   }
 
@@ -408,20 +432,21 @@ export class SideBySide {
     const asked = ++this.asked;
     const pair: [number, number] = [...this.pair];
     const levels: [number, number] = [a.state.level, b.state.level];
+    const schemes: [SchemeName, SchemeName] = [a.state.scheme, b.state.scheme];
     const ids = [a.levelId(), b.levelId()];
     this.measuring = true;
     this.emit();
     try {
       const h = await a.distanceTo(b);
       if (asked !== this.asked || !h || a.levelId() !== ids[0] || b.levelId() !== ids[1]) return;
-      this.distance = { ...h, panes: pair, levels, relative: h.diagonal > 0 ? h.distance / h.diagonal : 0 };
+      this.distance = { ...h, panes: pair, schemes, levels, relative: h.diagonal > 0 ? h.distance / h.diagonal : 0 };
       this.message = '';
       this.clearColours();
       if (this.colours && h.aToB && h.bToA) {
         // One scale for both: dark on the other surface, yellow at the Hausdorff distance.
         const top = Math.max(h.distance, 1e-300);
-        a.setLevelColors(levels[0], influenceColors(h.aToB, 0, top));
-        b.setLevelColors(levels[1], influenceColors(h.bToA, 0, top));
+        a.setLevelColors(levels[0], influenceColors(h.aToB, 0, top), 'distance');
+        b.setLevelColors(levels[1], influenceColors(h.bToA, 0, top), 'distance');
         this.coloured = [
           { pane: pair[0], level: levels[0] },
           { pane: pair[1], level: levels[1] },
@@ -439,7 +464,7 @@ export class SideBySide {
   }
 
   private clearColours(): void {
-    for (const { pane, level } of this.coloured) this.viewer(pane)?.setLevelColors(level, null);
+    for (const { pane, level } of this.coloured) this.viewer(pane)?.setLevelColors(level, null, 'distance');
     this.coloured = [];
   }
 

@@ -15,11 +15,11 @@ const ROWS: readonly { key: string; label: string; value: (f: MeshFacts) => stri
   { key: 'face-types', label: 'Face types', value: faceTypes },
 ];
 
-/** "8 triangles, 18 quads", "6 quads", "1 other". */
+/** "8 triangles, 18 quads", "6 quads", "1,536 quads", "1 other polygon". */
 export function faceTypes(f: MeshFacts): string {
   const parts: string[] = [];
   const add = (count: number, one: string, many: string) => {
-    if (count > 0) parts.push(`${count} ${count === 1 ? one : many}`);
+    if (count > 0) parts.push(`${count.toLocaleString('en')} ${count === 1 ? one : many}`);
   };
   add(f.triangles, 'triangle', 'triangles');
   add(f.quads, 'quad', 'quads');

@@ -84,9 +84,10 @@ export class PaneGrid {
     if (header.scheme instanceof HTMLSelectElement) header.scheme.value = pane.scheme;
     else header.scheme.textContent = schemeInfo(pane.scheme).label;
     const counts = v.facts ? ` · ${v.facts.vertices.toLocaleString('en')} vertices · ${faceTypes(v.facts)}` : '';
-    const triangulated = pane.triangulated && index > 0 ? ' · triangulated first' : '';
+    const triangulated = pane.triangulated ? ' · triangulated first' : '';
+    const tags = pane.ignoresTags ? ' · creases not applied' : '';
     const busy = v.busy ? ' · working…' : '';
-    header.level.textContent = v.levelCount > 0 ? `level ${v.level}${counts}${triangulated}${busy}` : busy;
+    header.level.textContent = v.levelCount > 0 ? `level ${v.level}${counts}${triangulated}${tags}${busy}` : busy;
     const apart = !together && index > 0;
     header.down.hidden = !apart;
     header.up.hidden = !apart;

@@ -3,7 +3,7 @@
  * panes are measured, the colours by distance, and the measured symmetric
  * Hausdorff distance with its share of the diagonal and its colour bar.
  */
-import { distanceText, type SideBySideState } from '../teach/side-by-side';
+import { distanceText, hausdorffText, type SideBySideState } from '../teach/side-by-side';
 import { schemeInfo } from '../viewer/scheme-info';
 import { MAX_PANES } from '../viewer/viewer-params';
 import { el, section, uniqueId } from './dom';
@@ -97,10 +97,14 @@ export class SidePanel {
     } else if (d) {
       const [a, b] = d.panes.map((p) => state.panes[p]);
       const names = [a, b].map((p, i) => `${schemeInfo(p?.scheme ?? '').label} level ${d.levels[i]}`);
+      const figure =
+        d.distance <= d.errorBound
+          ? `${hausdorffText(d)}: the surfaces agree`
+          : `${distanceText(d.distance)}, ${(100 * d.relative).toPrecision(3)} % of the diagonal ` +
+            `(${distanceText(d.diagonal)}; within ${distanceText(d.errorBound)})`;
       this.result.textContent =
-        `Hausdorff distance between ${names[0]} and ${names[1]}: ${distanceText(d.distance)}, ` +
-        `${(100 * d.relative).toPrecision(3)} % of the diagonal (${distanceText(d.diagonal)}; ` +
-        `within ${distanceText(d.errorBound)}).${state.measuring ? ' Measuring again…' : ''}`;
+        `Hausdorff distance between ${names[0]} and ${names[1]}: ${figure}.` +
+        (state.measuring ? ' Measuring again…' : '');
       this.bar.low.textContent = '0';
       this.bar.high.textContent = distanceText(d.distance);
     } else {

@@ -146,7 +146,15 @@ interface Level {
   graphics: LevelGraphics | null;
   /** Its stencils, once asked for (stencils()). */
   stencils?: Promise<StencilTable>;
+  /** The tools' colours of its vertices (setLevelColors). */
+  colours?: { owner: ColourOwner; rgb: Float32Array }[];
 }
+
+/** Who colours a level's vertices: the basis view, a result's check, side by side's distances. */
+export type ColourOwner = 'basis' | 'check' | 'distance';
+
+/** Which colours show when several tools colour a level: what the user picked last in the panels over the panes' distances. */
+const COLOUR_PRIORITY: Record<ColourOwner, number> = { basis: 2, check: 2, distance: 1 };
 
 export class SubdivViewer {
   readonly view: SceneView;
@@ -510,14 +518,28 @@ export class SubdivViewer {
 
   /**
    * Colours level `k`'s surface per vertex (`rgb`: three numbers in 0..1 a
-   * vertex), or back to its one colour (null). The view shows a level's
-   * colours whenever that level is shown.
+   * vertex) for `owner`, or takes `owner`'s colours away (null). Several
+   * tools may colour a level: the one of highest {@link COLOUR_PRIORITY}
+   * shows, the latest among equals, and the others' come back when it
+   * stops. The view shows a level's colours whenever that level is shown.
    */
-  setLevelColors(k: number, rgb: Float32Array | null): void {
+  setLevelColors(k: number, rgb: Float32Array | null, owner: ColourOwner): void {
     const level = this.levels[k];
     if (!level) return;
-    this.graphicsOf(level).setColors(rgb);
-    if (k === this.current) this.view.setVertexColors(rgb !== null);
+    const layers = (level.colours ??= []).filter((c) => c.owner !== owner);
+    if (rgb) layers.push({ owner, rgb });
+    level.colours = layers;
+    const shown = this.shownColours(level);
+    this.graphicsOf(level).setColors(shown);
+    if (k === this.current) this.view.setVertexColors(shown !== null);
+  }
+
+  /** The colours of `level` that show (setLevelColors), or null. */
+  private shownColours(level: Level): Float32Array | null {
+    let top: { owner: ColourOwner; rgb: Float32Array } | null = null;
+    for (const layer of level.colours ?? [])
+      if (!top || COLOUR_PRIORITY[layer.owner] >= COLOUR_PRIORITY[top.owner]) top = layer;
+    return top?.rgb ?? null;
   }
 
   /**
@@ -595,9 +617,8 @@ export class SubdivViewer {
   async distanceTo(other: SubdivViewer): Promise<HausdorffDistance | null> {
     if (!this.levels[this.current] || !other.levels[other.current]) return null;
     const k = other.current;
-    return this.computing('Measuring the distance between the surfaces…', () =>
-      this.withHandle(this.current, (a) => other.withHandle(k, (b) => this.core.hausdorff(a, b))),
-    );
+    // Not a busy state: a step asked for meanwhile waits for it in the worker, not refused.
+    return this.withHandle(this.current, (a) => other.withHandle(k, (b) => this.core.hausdorff(a, b)));
   }
 
   /** The render buffers of level `k` (null: not computed), as the view draws them. */
@@ -799,13 +820,17 @@ export class SubdivViewer {
   }
 
   private graphicsOf(level: Level): LevelGraphics {
-    if (!level.graphics)
+    if (!level.graphics) {
       level.graphics = new LevelGraphics(
         level.data.buffers,
         level.data.controlEdges,
         level.data.orientation,
         level.data.tags,
       );
+      // Made again after releaseGpu: the tools' colours come back with it.
+      const shown = this.shownColours(level);
+      if (shown) level.graphics.setColors(shown);
+    }
     return level.graphics;
   }
 
