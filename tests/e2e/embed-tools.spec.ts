@@ -109,8 +109,10 @@ test('tool="stencils": vertex 7 of the cube is 5/12 of its corner, 1/6 of each e
     expect(terms[0].vertices).toEqual([7]);
     expect(terms[1].vertices.map(apart)).toEqual([1, 1, 1]);
     expect(terms[2].vertices.map(apart)).toEqual([2, 2, 2]);
-    const labels = await viewer.getByTestId('view.stencil-label').allTextContents();
-    expect(labels.sort()).toEqual(['1/36', '1/36', '1/36', '1/6', '1/6', '1/6', '5/12'].sort());
+    // The labels come with the next frame after the caption: polled.
+    await expect
+      .poll(async () => (await viewer.getByTestId('view.stencil-label').allTextContents()).sort())
+      .toEqual(['1/36', '1/36', '1/36', '1/6', '1/6', '1/6', '5/12'].sort());
     await viewer.screenshot({ path: 'test-results/screenshots/embed-tools-stencil-cube.png' });
     // A narrow viewer (a phone, a sidebar): the caption wraps, the picture keeps most of the height.
     await viewer.evaluate((e) => {

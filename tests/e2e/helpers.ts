@@ -122,11 +122,11 @@ export interface PngInfo {
   width: number;
   height: number;
   colorType: number;
-  /** RGBA of pixel (x, y); only for 8-bit RGBA images. */
+  /** RGBA of pixel (x, y) (alpha 255 in an RGB image); only for 8-bit RGB and RGBA images. */
   pixel(x: number, y: number): [number, number, number, number];
 }
 
-/** Reads a PNG's header and, for 8-bit RGBA, its pixels (inflate + unfilter, per the PNG spec). */
+/** Reads a PNG's header and, for 8-bit RGB and RGBA, its pixels (inflate + unfilter, per the PNG spec). */
 export function readPng(bytes: Buffer): PngInfo {
   if (!bytes.subarray(0, 8).equals(PNG_SIGNATURE)) throw new Error('not a PNG (bad signature)');
   const width = bytes.readUInt32BE(16);
@@ -141,7 +141,7 @@ export function readPng(bytes: Buffer): PngInfo {
     offset += 12 + length;
   }
   let pixels: Uint8Array | null = null;
-  const bpp = 4;
+  const bpp = colorType === 2 ? 3 : 4;
   const stride = width * bpp;
   const decode = () => {
     const raw = inflateSync(Buffer.concat(idat));
@@ -172,10 +172,11 @@ export function readPng(bytes: Buffer): PngInfo {
     height,
     colorType,
     pixel(x, y) {
-      if (bitDepth !== 8 || colorType !== 6) throw new Error(`pixel(): only 8-bit RGBA (got ${bitDepth}/${colorType})`);
+      if (bitDepth !== 8 || (colorType !== 6 && colorType !== 2))
+        throw new Error(`pixel(): only 8-bit RGB or RGBA (got ${bitDepth}/${colorType})`);
       pixels ??= decode();
       const i = y * stride + x * bpp;
-      return [pixels[i], pixels[i + 1], pixels[i + 2], pixels[i + 3]];
+      return [pixels[i], pixels[i + 1], pixels[i + 2], bpp === 4 ? pixels[i + 3] : 255];
     },
   };
 }

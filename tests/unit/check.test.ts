@@ -179,7 +179,7 @@ describe('hausdorffDistance with vertex distances (side-by-side colours)', () =>
     // are 0, 1, sqrt 2 and 1 from it, and sqrt 2 is the Hausdorff distance.
     expect(Array.from(h.aToB ?? [])).toEqual([0, 0, 0, 0]);
     const expected = [0, 1, Math.SQRT2, 1];
-    (h.bToA ?? []).forEach((d, v) => expect(d).toBeCloseTo(expected[v], 15));
+    for (const [v, d] of (h.bToA ?? []).entries()) expect(d).toBeCloseTo(expected[v], 15);
     expect(h.bToA).toHaveLength(4);
     expect(Math.abs(h.distance - Math.SQRT2)).toBeLessThanOrEqual(h.errorBound);
     expect(hausdorffDistance(square(0), square(0.1)).aToB).toBeUndefined();

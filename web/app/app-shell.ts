@@ -9,17 +9,8 @@ import type { SchemeName } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
-import { CreaseEditor } from '../edit/crease-editor';
 import { nextRenderMode } from '../render/render-mode';
-import { BasisView } from '../teach/basis-view';
-import { ResultCheck } from '../teach/result-check';
-import { SideBySide } from '../teach/side-by-side';
-import { SplitSmooth } from '../teach/split-smooth';
-import { StencilInspector } from '../teach/stencil-inspector';
-import { BasisPanel } from '../ui/basis-panel';
-import { CheckPanel } from '../ui/check-panel';
 import { ConfirmDialog } from '../ui/confirm-dialog';
-import { CreasePanel } from '../ui/crease-panel';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
 import { button, el } from '../ui/dom';
 import { DropZone } from '../ui/drop-zone';
@@ -30,15 +21,11 @@ import { FactsPanel } from '../ui/facts-panel';
 import { createGallery } from '../ui/gallery';
 import { LevelPanel } from '../ui/level-panel';
 import { NoticeBar } from '../ui/notice-bar';
-import { PaneGrid } from '../ui/pane-grid';
 import { ProgressOverlay } from '../ui/progress-overlay';
 import { RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { SharePanel } from '../ui/share-panel';
 import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
-import { SidePanel } from '../ui/side-panel';
-import { SplitPanel } from '../ui/split-panel';
-import { StencilPanel } from '../ui/stencil-panel';
 import { handleViewKey } from '../ui/view-keys';
 import { messageOf } from '../viewer/error-message';
 import { formatBytes } from '../viewer/memory-budget';
@@ -46,6 +33,7 @@ import { fetchMesh, LoadError, type MeshText, readFile } from '../viewer/mesh-so
 import { checkRulesInCore } from '../viewer/rules-check';
 import { hostLabel, hostNeedsTriangles, schemeInfo } from '../viewer/scheme-info';
 import { type LargeStepInfo, type SchemeOptions, SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
+import { AppTools } from './app-tools';
 import { ExportActions } from './export-actions';
 import { SAMPLES } from './samples';
 import { savedView, saveView } from './saved-view';
@@ -67,19 +55,7 @@ export class AppShell {
   private readonly rules: RulesPanel;
   private readonly levels: LevelPanel;
   private readonly display: DisplayPanel;
-  private readonly creaseEditor: CreaseEditor;
-  private readonly creasePanel: CreasePanel;
-  private readonly inspector: StencilInspector;
-  private readonly stencilPanel: StencilPanel;
-  private readonly basis: BasisView;
-  private readonly basisPanel: BasisPanel;
-  private readonly split: SplitSmooth;
-  private readonly splitPanel: SplitPanel;
-  private readonly sideBySide: SideBySide;
-  private readonly sidePanel: SidePanel;
-  private readonly paneGrid: PaneGrid;
-  private readonly resultCheck: ResultCheck;
-  private readonly checkPanel: CheckPanel;
+  private readonly tools: AppTools;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
   private readonly exportActions: ExportActions;
@@ -135,7 +111,7 @@ export class AppShell {
     this.exportActions = new ExportActions(
       this.viewer,
       (source, error) => this.showError(source, error),
-      () => this.sideBySide.viewers(),
+      () => this.tools.sideBySide.viewers(),
     );
     stage.append(this.emptyHint, this.firstVisitHint, this.facts.element, this.progress.element);
 
@@ -159,90 +135,13 @@ export class AppShell {
       onReset: () => this.viewer.reset(),
       onLevel: (k) => this.viewer.setLevel(k),
     });
-    this.creaseEditor = new CreaseEditor(this.viewer, (error) => this.modelError(error));
-    this.inspector = new StencilInspector(this.viewer, (error) => this.modelError(error));
-    this.stencilPanel = new StencilPanel({
-      onInspecting: (on) => this.setClickMode(on ? 'inspect' : null),
-      onVertex: (vertex) => void this.inspector.select(vertex),
+    this.tools = new AppTools({
+      viewer: this.viewer,
+      stage,
+      modelError: (error) => this.modelError(error),
+      reachLevel: (level) => this.reachLevel(level),
+      confirmLargeStep: (info, scheme) => this.confirmLargeStep(info, scheme),
     });
-    this.inspector.onChange((state) => this.stencilPanel.update(state));
-    this.stencilPanel.update(this.inspector.state);
-    this.basis = new BasisView(this.viewer, (error) => this.modelError(error));
-    this.basisPanel = new BasisPanel({
-      onPicking: (on) => this.setClickMode(on ? 'basis' : null),
-      onVertex: (vertex) => void this.basis.select(vertex),
-    });
-    this.basis.onChange((state) => this.basisPanel.update(state));
-    this.basisPanel.update(this.basis.state);
-    this.split = new SplitSmooth(this.viewer, (error) => this.modelError(error));
-    this.splitPanel = new SplitPanel({
-      onT: (t) => void this.split.setT(t),
-      onAnimate: () => this.split.animate(),
-    });
-    this.split.onChange((state) => this.splitPanel.update(state));
-    this.splitPanel.update(this.split.state);
-    this.paneGrid = new PaneGrid(stage, {
-      onScheme: (index, scheme) => this.sideBySide.setScheme(index, scheme),
-      onStep: (index, delta) => this.sideBySide.step(index, delta),
-      onKey: (index, event) => {
-        const viewer = this.sideBySide.viewer(index);
-        if (viewer) handleViewKey(viewer.view, event);
-      },
-    });
-    this.sideBySide = new SideBySide(
-      this.viewer,
-      {
-        addPane: (index) => {
-          const pane: SubdivViewer = new SubdivViewer(this.paneGrid.add(index), {
-            confirmLargeStep: (info) => this.confirmLargeStep(info, pane.state.scheme),
-          });
-          return pane;
-        },
-        removePane: (index) => this.paneGrid.remove(index),
-      },
-      (error) => this.modelError(error),
-    );
-    this.sidePanel = new SidePanel({
-      onCount: (count) => this.sideBySide.setCount(count),
-      onTogether: (together) => this.sideBySide.setTogether(together),
-      onPair: (a, b) => this.sideBySide.setPair(a, b),
-      onColours: (on) => this.sideBySide.setColours(on),
-    });
-    this.sideBySide.onChange((state) => {
-      this.sidePanel.update(state, this.viewer.state.levelCount > 0);
-      this.paneGrid.update(state);
-    });
-    this.sidePanel.update(this.sideBySide.state, false);
-    this.resultCheck = new ResultCheck(
-      this.viewer,
-      (level) => this.reachLevel(level),
-      (error) => this.modelError(error),
-    );
-    this.checkPanel = new CheckPanel({
-      onCheck: (name, text, format, level, tolerance) =>
-        void this.resultCheck.check(name, text, format, level, tolerance),
-      onShowStencil: (level, vertex) => {
-        this.viewer.setLevel(level);
-        this.setClickMode('inspect');
-        void this.inspector.select(vertex);
-      },
-    });
-    this.resultCheck.onChange((state) => this.checkPanel.update(state));
-    this.checkPanel.update(this.resultCheck.state);
-    // A click on the view picks for the crease editor, the inspector or the basis view, whichever is on.
-    this.viewer.view.onClick = (click) => {
-      this.creaseEditor.click(click);
-      this.inspector.click(click);
-      this.basis.click(click);
-    };
-    this.creasePanel = new CreasePanel({
-      onEditing: (on) => this.setClickMode(on ? 'creases' : null),
-      onSharpness: (sharpness) => void this.creaseEditor.setSharpness(sharpness),
-      onUndo: () => this.creaseEditor.undo(),
-      onRedo: () => this.creaseEditor.redo(),
-    });
-    this.creaseEditor.onChange((state) => this.creasePanel.update(state));
-    this.creasePanel.update(this.creaseEditor.state);
     this.display = new DisplayPanel({
       onRenderMode: (m) => this.viewer.setRenderMode(m),
       onOverlay: (name, on) => this.viewer.setOverlay(name, on),
@@ -269,12 +168,12 @@ export class AppShell {
       openUrl: (src) => this.openUrl(src, src),
       setScheme: (scheme) => this.setScheme(scheme),
       subdivide: () => this.subdivide(),
-      beside: () => this.sideBySide.beside(),
-      setBeside: (schemes) => this.sideBySide.setBeside(schemes),
+      beside: () => this.tools.sideBySide.beside(),
+      setBeside: (schemes) => this.tools.sideBySide.setBeside(schemes),
       onBesideChange: (listener) => {
         let last = '';
-        this.sideBySide.onChange(() => {
-          const now = this.sideBySide.beside().join(',');
+        this.tools.sideBySide.onChange(() => {
+          const now = this.tools.sideBySide.beside().join(',');
           if (now !== last) listener();
           last = now;
         });
@@ -317,16 +216,17 @@ export class AppShell {
       this.scheme.element,
       this.rules.element,
       this.levels.element,
-      this.sidePanel.element,
-      this.creasePanel.element,
-      this.stencilPanel.element,
-      this.basisPanel.element,
-      this.splitPanel.element,
-      this.checkPanel.element,
+      ...this.tools.panels,
       this.display.element,
       shortcutsHelp(),
     );
-    const main = el('main', { className: 'app-main' }, this.errors.element, this.notice.element, this.paneGrid.element);
+    const main = el(
+      'main',
+      { className: 'app-main' },
+      this.errors.element,
+      this.notice.element,
+      this.tools.paneGrid.element,
+    );
     const dropZone = new DropZone(document, (file) => void this.openFile(file));
     root.replaceChildren(
       header,
@@ -354,17 +254,17 @@ export class AppShell {
         open: () => this.fileInput.click(),
         cancel: () => this.cancel(),
         copyImage: () => void this.exportActions.copyImage(false),
-        toggleInspector: () => this.setClickMode(this.inspector.state.inspecting ? null : 'inspect'),
+        toggleInspector: () => this.tools.setClickMode(this.tools.inspector.state.inspecting ? null : 'inspect'),
         creases: {
-          toggleEditing: () => this.setClickMode(this.creaseEditor.state.editing ? null : 'creases'),
+          toggleEditing: () => this.tools.setClickMode(this.tools.creaseEditor.state.editing ? null : 'creases'),
           sharpness: (sharpness) => {
-            const { editing, selection } = this.creaseEditor.state;
+            const { editing, selection } = this.tools.creaseEditor.state;
             if (!editing || !selection) return false;
-            void this.creaseEditor.setSharpness(sharpness);
+            void this.tools.creaseEditor.setSharpness(sharpness);
             return true;
           },
-          undo: () => this.creaseEditor.undo(),
-          redo: () => this.creaseEditor.redo(),
+          undo: () => this.tools.creaseEditor.undo(),
+          redo: () => this.tools.creaseEditor.redo(),
         },
       },
       () => this.confirm.open || this.embedDialog.open,
@@ -424,7 +324,7 @@ export class AppShell {
         return { x: rect.left + at.x, y: rect.top + at.y };
       },
       sideBySide: () => {
-        const s = this.sideBySide.state;
+        const s = this.tools.sideBySide.state;
         const d = s.distance;
         const farthest = (values: Float64Array | undefined) =>
           (values ?? new Float64Array(0)).reduce((m, x) => Math.max(m, x), 0);
@@ -438,7 +338,7 @@ export class AppShell {
             faces: p.viewer.facts?.faces ?? null,
             busy: p.viewer.busy !== null,
             message: p.message,
-            view: (this.sideBySide.viewer(i) ?? this.viewer).getView(),
+            view: (this.tools.sideBySide.viewer(i) ?? this.viewer).getView(),
           })),
           distance: d
             ? {
@@ -518,21 +418,10 @@ export class AppShell {
     }
   }
 
-  /** What a click on the view does: pick for the crease editor, for the stencil inspector, or neither. */
-  private setClickMode(mode: 'creases' | 'inspect' | 'basis' | null): void {
-    // One at a time: the one going off first, so that its marks go before the other's come.
-    if (mode !== 'creases') this.creaseEditor.setEditing(false);
-    if (mode !== 'inspect') this.inspector.setInspecting(false);
-    if (mode !== 'basis') this.basis.setPicking(false);
-    if (mode === 'creases') this.creaseEditor.setEditing(true);
-    if (mode === 'inspect') this.inspector.setInspecting(true);
-    if (mode === 'basis') this.basis.setPicking(true);
-  }
-
   /** Cancel or Esc: the running step or tool request stops, in every pane. */
   private cancel(): void {
     this.viewer.cancel();
-    this.sideBySide.cancel();
+    this.tools.sideBySide.cancel();
   }
 
   /** Shows an error about the shown model (a teaching tool's or an edit's request that failed). */

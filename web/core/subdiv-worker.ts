@@ -5,6 +5,7 @@
  * (never ./generated/), answers one request at a time and transfers results.
  */
 import { basisFunction } from './basis';
+import { inspectionBuffers } from './inspect';
 import type { Mesh, MeshFacts, MeshTags, RenderBuffers } from './mesh';
 import { orientation } from './orientation';
 import {
@@ -13,6 +14,7 @@ import {
   exportMeshChunks,
   hausdorffDistance,
   init,
+  inspectMesh,
   parseForView,
   parseMesh,
   predictSize,
@@ -181,6 +183,11 @@ const handlers: Handlers = {
     await init();
     const h = hausdorffDistance(keptLevel(a).mesh, keptLevel(b).mesh, true);
     return { value: h, transfer: [h.aToB, h.bToA].flatMap((d) => (d ? [d.buffer] : [])) };
+  },
+  async inspect({ handle, options }) {
+    await init();
+    const inspection = inspectMesh(keptLevel(handle).mesh, options);
+    return { value: inspection, transfer: inspectionBuffers(inspection) };
   },
   async predict({ handle, options }) {
     await init();

@@ -10,6 +10,7 @@
  */
 import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
+import type { Inspection, InspectOptions } from './inspect';
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
@@ -323,6 +324,11 @@ export class CoreSession {
   /** The symmetric Hausdorff distance between kept levels `a` and `b` (either session's), with vertex distances. */
   hausdorff(a: LevelHandle, b: LevelHandle): Promise<HausdorffDistance> {
     return this.client.request(this, 'hausdorff', { a, b });
+  }
+
+  /** CGAL's geometry around kept level `handle`: its measures and what `options` asks for. */
+  inspect(handle: LevelHandle, options: InspectOptions): Promise<Inspection> {
+    return this.client.request(this, 'inspect', { handle, options });
   }
 
   compare(handle: LevelHandle, text: string, format: MeshFormat, tolerance: number): Promise<MeshComparison> {

@@ -7,6 +7,7 @@
  */
 import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
+import type { Inspection, InspectOptions } from './inspect';
 import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
@@ -66,6 +67,8 @@ export interface WorkerRequests {
   };
   /** The symmetric Hausdorff distance between two kept levels, with each vertex's distance to the other surface. */
   hausdorff: { args: { a: LevelHandle; b: LevelHandle }; result: HausdorffDistance };
+  /** CGAL's geometry around a kept level (inspect.ts): its measures and what `options` asks for. */
+  inspect: { args: { handle: LevelHandle; options: InspectOptions }; result: Inspection };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */

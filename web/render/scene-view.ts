@@ -19,6 +19,7 @@ import {
   LineSegments,
   Mesh,
   MeshLambertMaterial,
+  type Object3D,
   PerspectiveCamera,
   Points,
   PointsMaterial,
@@ -137,6 +138,8 @@ export class SceneView {
   );
   private mode: RenderMode = 'smooth';
   private radius = 1;
+  /** A tool's own objects (setExtras). */
+  private extras: Object3D | null = null;
   private dirty = true;
   private frame = 0;
   private readonly resizeObserver: ResizeObserver;
@@ -369,11 +372,7 @@ export class SceneView {
   /** Points the camera at `sphere` from the default direction, at a distance that shows all of it. */
   fitSphere(sphere: Sphere): void {
     this.radius = Math.max(sphere.radius, 1e-9);
-    // The narrower of the two fields of view: a view taller than wide (a side-by-side pane,
-    // a phone held upright) sees less across than up and down.
-    const vertical = ((this.camera.fov / 2) * Math.PI) / 180;
-    const horizontal = Math.atan(Math.tan(vertical) * this.camera.aspect);
-    const distance = (this.radius / Math.sin(Math.min(vertical, horizontal))) * 1.2;
+    const distance = this.fitDistance(this.radius);
     this.controls.target.copy(sphere.center);
     this.camera.up.set(0, 1, 0);
     this.camera.position.copy(sphere.center).addScaledVector(FIT_DIRECTION, distance);
@@ -382,6 +381,17 @@ export class SceneView {
     this.controls.update();
     this.dirty = true;
     this.onViewChange?.();
+  }
+
+  /**
+   * How far from its centre the camera shows a sphere of `radius` whole, by
+   * the narrower of the two fields of view: a view taller than wide (a
+   * side-by-side pane, a phone held upright) sees less across than up and down.
+   */
+  private fitDistance(radius: number): number {
+    const vertical = ((this.camera.fov / 2) * Math.PI) / 180;
+    const horizontal = Math.atan(Math.tan(vertical) * this.camera.aspect);
+    return (radius / Math.sin(Math.min(vertical, horizontal))) * 1.2;
   }
 
   /** The current viewpoint. */
@@ -529,6 +539,31 @@ export class SceneView {
       return object;
     });
     this.dirty = true;
+  }
+
+  /**
+   * Draws a tool's own objects with the level (Inspect's faces, sphere, hull
+   * and planes), in place of the last ones; null: none. The caller keeps
+   * and disposes them.
+   */
+  setExtras(object: Object3D | null): void {
+    if (this.extras) this.scene.remove(this.extras);
+    this.extras = object;
+    if (object) this.scene.add(object);
+    this.dirty = true;
+  }
+
+  /** Moves the camera to show `sphere`, looking from where it looks now. */
+  frameSphere(sphere: Sphere): void {
+    const direction = this.camera.position.clone().sub(this.controls.target).normalize();
+    const distance = this.fitDistance(Math.max(sphere.radius, 1e-9));
+    this.controls.target.copy(sphere.center);
+    this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
+    this.camera.lookAt(sphere.center);
+    this.updateClipping();
+    this.controls.update();
+    this.dirty = true;
+    this.onViewChange?.();
   }
 
   /**

@@ -130,7 +130,7 @@ export class SideBySide {
     const main = this.main.state;
     const tags = this.model?.tags;
     const tagged = (tags?.creaseSharpness.length ?? 0) + (tags?.cornerSharpness.length ?? 0) > 0;
-    const polygons = this.model !== null && this.model.faceSizes.some((n) => n !== 3);
+    const polygons = this.model?.faceSizes.some((n) => n !== 3) ?? false;
     const pane = (scheme: SchemeName, viewer: ViewerState, message: string): PaneState => ({
       scheme,
       triangulated: polygons && schemeInfo(scheme).needsTriangles,

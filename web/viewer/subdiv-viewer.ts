@@ -13,6 +13,7 @@
 
 import type { BufferAttribute } from 'three';
 import type { MeshComparison } from '../core/compare';
+import type { Inspection, InspectOptions } from '../core/inspect';
 import type {
   BoundaryInterpolation,
   CreaseMethod,
@@ -526,7 +527,7 @@ export class SubdivViewer {
   setLevelColors(k: number, rgb: Float32Array | null, owner: ColourOwner): void {
     const level = this.levels[k];
     if (!level) return;
-    const layers = (level.colours ??= []).filter((c) => c.owner !== owner);
+    const layers = (level.colours ?? []).filter((c) => c.owner !== owner);
     if (rgb) layers.push({ owner, rgb });
     level.colours = layers;
     const shown = this.shownColours(level);
@@ -619,6 +620,15 @@ export class SubdivViewer {
     const k = other.current;
     // Not a busy state: a step asked for meanwhile waits for it in the worker, not refused.
     return this.withHandle(this.current, (a) => other.withHandle(k, (b) => this.core.hausdorff(a, b)));
+  }
+
+  /**
+   * CGAL's geometry around level `k` (inspect.ts), in the worker, as the
+   * viewer's busy state (Cancel and Esc stop it). Null before a load.
+   */
+  async inspect(k: number, options: InspectOptions): Promise<Inspection | null> {
+    if (!this.levels[k]) return null;
+    return this.computing(`Inspecting level ${k}…`, () => this.withHandle(k, (h) => this.core.inspect(h, options)));
   }
 
   /** The render buffers of level `k` (null: not computed), as the view draws them. */

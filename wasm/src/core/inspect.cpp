@@ -239,9 +239,10 @@ Width_result width_of(const std::vector<Epick::Point_3>& points,
   return out;
 }
 
-// Area and volume of the faces fanned from their first corner (the
-// triangulation every view and export of the level uses), the volume by
-// the divergence theorem (closed meshes).
+// Area and volume of the faces fanned from their centroids: the same for
+// any numbering of a face's corners (a level computed one step at a time
+// and in one call number them differently), exact for planar faces; the
+// volume by the divergence theorem (closed meshes).
 Mesh_measures measures_of(const Mesh_buffers& in, const Mesh& mesh) {
   const auto start = std::chrono::steady_clock::now();
   Mesh_measures out;
@@ -251,10 +252,12 @@ Mesh_measures measures_of(const Mesh_buffers& in, const Mesh& mesh) {
   std::size_t corner = 0;
   for (std::uint32_t size : in.face_sizes) {
     const std::uint32_t* f = &in.face_indices[corner];
-    const double* a = &p[3 * f[0]];
-    for (std::uint32_t k = 1; k + 1 < size; ++k) {
+    double a[3] = {0, 0, 0};
+    for (std::uint32_t k = 0; k < size; ++k)
+      for (int i = 0; i < 3; ++i) a[i] += p[3 * f[k] + i] / size;
+    for (std::uint32_t k = 0; k < size; ++k) {
       const double* b = &p[3 * f[k]];
-      const double* c = &p[3 * f[k + 1]];
+      const double* c = &p[3 * f[(k + 1) % size]];
       const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
       const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
       const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],

@@ -1,0 +1,173 @@
+/**
+ * Inspect: CGAL's geometry around the shown level, computed in the worker
+ * (core/inspect.ts) and kept per level, so that scrubbing shows a level's
+ * figures at once; once the user inspected, each level shown next is
+ * inspected with the same choices. Level 0's measures are kept too, for
+ * how much a scheme changes area, volume and size. The results are drawn
+ * over the surface (render/inspect-graphics.ts), and a pair of crossing
+ * faces can be framed.
+ */
+import { Sphere, Vector3 } from 'three';
+import type { Inspection, InspectOptions, MeshMeasures } from '../core/inspect';
+import { CancelledError } from '../core/worker-client';
+import { InspectGraphics, type InspectLayers } from '../render/inspect-graphics';
+import type { SubdivViewer } from '../viewer/subdiv-viewer';
+
+/** What to compute besides the measures. */
+export type InspectChoices = Required<Omit<InspectOptions, 'maxPairs'>>;
+
+export interface InspectorState {
+  /** A model is loaded. */
+  available: boolean;
+  level: number;
+  choices: InspectChoices;
+  layers: InspectLayers;
+  /** The shown level's inspection (null: not yet). */
+  result: Inspection | null;
+  /** Level 0's measures (null: not yet), to compare the shown level's with. */
+  control: MeshMeasures | null;
+  busy: boolean;
+  framed: [number, number] | null;
+  message: string;
+}
+
+/** Pairs of crossing faces listed (all are counted). */
+const LISTED_PAIRS = 100;
+
+export class MeshInspector {
+  private choices: InspectChoices = { selfIntersections: true, sphere: true, hull: true, width: true };
+  private layers: InspectLayers = { intersections: true, sphere: true, hull: true, width: true };
+  /** Inspections by level object (viewer.levelId): a recomputed level has another. */
+  private readonly results = new Map<number, Inspection>();
+  private control: { faces: Uint32Array; measures: MeshMeasures } | null = null;
+  /** The user inspected: each level shown next is inspected too. */
+  private active = false;
+  private busy = false;
+  private framed: [number, number] | null = null;
+  /** The level object the framed pair belongs to. */
+  private framedId = 0;
+  private message = '';
+  private graphics: InspectGraphics | null = null;
+  /** What the drawn graphics show (level id, framed pair, layers). */
+  private drawnKey = '';
+  private readonly listeners = new Set<(state: InspectorState) => void>();
+
+  constructor(
+    private readonly viewer: SubdivViewer,
+    private readonly onError: (error: unknown) => void,
+  ) {
+    viewer.onChange((state) => {
+      const faces = viewer.controlMesh?.faceIndices ?? null;
+      if (this.control && this.control.faces !== faces) {
+        // Another model: nothing kept is about it.
+        this.control = null;
+        this.results.clear();
+        this.framed = null;
+      }
+      if (this.framed && this.framedId !== viewer.levelId()) this.framed = null;
+      if (this.active && !state.busy && !this.busy && state.levelCount > 0 && !this.results.has(viewer.levelId()))
+        void this.inspect();
+      this.draw();
+      this.emit();
+    });
+  }
+
+  get state(): InspectorState {
+    const viewer = this.viewer.state;
+    return {
+      available: viewer.levelCount > 0,
+      level: viewer.level,
+      choices: { ...this.choices },
+      layers: { ...this.layers },
+      result: this.results.get(this.viewer.levelId()) ?? null,
+      control: this.control?.measures ?? null,
+      busy: this.busy,
+      framed: this.framed,
+      message: this.message,
+    };
+  }
+
+  onChange(listener: (state: InspectorState) => void): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  setChoices(choices: Partial<InspectChoices>): void {
+    this.choices = { ...this.choices, ...choices };
+    this.emit();
+  }
+
+  setLayers(layers: Partial<InspectLayers>): void {
+    this.layers = { ...this.layers, ...layers };
+    this.draw();
+    this.emit();
+  }
+
+  /** Inspects the shown level with the choices (again, when they changed); the levels shown next follow. */
+  async inspect(): Promise<void> {
+    const viewer = this.viewer;
+    if (viewer.state.levelCount === 0) return;
+    this.active = true;
+    const level = viewer.state.level;
+    const id = viewer.levelId();
+    const faces = viewer.controlMesh?.faceIndices ?? null;
+    this.busy = true;
+    this.message = '';
+    this.emit();
+    try {
+      if (!this.control && faces) {
+        const measures = (await viewer.inspect(0, {}))?.measures;
+        if (measures && viewer.controlMesh?.faceIndices === faces) this.control = { faces, measures };
+      }
+      const result = await viewer.inspect(level, { ...this.choices, maxPairs: LISTED_PAIRS });
+      if (result && viewer.levelId(level) === id) this.results.set(id, result);
+    } catch (error) {
+      if (error instanceof CancelledError) {
+        this.active = false;
+        this.message = 'Inspection cancelled.';
+      } else {
+        this.message = '';
+        this.onError(error);
+      }
+    } finally {
+      this.busy = false;
+      this.draw();
+      this.emit();
+    }
+  }
+
+  /** Frames crossing faces `a` and `b` of the shown level, drawn darker; null: none framed. */
+  frame(pair: [number, number] | null): void {
+    this.framed = pair;
+    this.framedId = this.viewer.levelId();
+    const buffers = this.viewer.buffersOf(this.viewer.state.level);
+    if (pair && buffers) {
+      const box: Vector3[] = [];
+      for (let t = 0; t < buffers.triangleFace.length; ++t) {
+        if (buffers.triangleFace[t] !== pair[0] && buffers.triangleFace[t] !== pair[1]) continue;
+        for (let k = 0; k < 3; ++k)
+          box.push(new Vector3().fromArray(buffers.positions, 3 * buffers.triangles[3 * t + k]));
+      }
+      if (box.length > 0) this.viewer.view.frameSphere(new Sphere().setFromPoints(box));
+    }
+    this.draw();
+    this.emit();
+  }
+
+  /** Draws the shown level's results (none when it has none). */
+  private draw(): void {
+    const result = this.results.get(this.viewer.levelId()) ?? null;
+    const buffers = this.viewer.buffersOf(this.viewer.state.level);
+    const key = result ? `${this.viewer.levelId()}:${this.framed}:${JSON.stringify(this.layers)}` : '';
+    if (key === this.drawnKey) return;
+    this.drawnKey = key;
+    this.graphics?.dispose();
+    this.graphics = result && buffers ? new InspectGraphics(result, buffers, this.layers, this.framed) : null;
+    this.viewer.view.setExtras(this.graphics?.group ?? null);
+  }
+
+  private emit(): void {
+    const state = this.state;
+    for (const listener of this.listeners) listener(state);
+  }
+}
