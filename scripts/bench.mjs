@@ -13,7 +13,8 @@
 // OFF and OBJ in Node through the WASM module (bunny00, CGAL's
 // refined_elephant and bunny00 after two Loop steps). Then the app's time to
 // screen in Chromium (scripts/bench-app.mjs). Writes build/bench.json.
-// Usage: node scripts/bench.mjs [MESH.off] [--runs N] [--io-only | --app-only]
+// Then Inspect's computations natively and in WASM (benchInspectTable).
+// Usage: node scripts/bench.mjs [MESH.off] [--runs N] [--io-only | --app-only | --inspect-only]
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
@@ -34,6 +35,7 @@ function takeFlag(flag) {
 }
 const ioOnly = takeFlag('--io-only');
 const appOnly = takeFlag('--app-only');
+const inspectOnly = takeFlag('--inspect-only');
 const runsAt = argv.indexOf('--runs');
 const runs = runsAt >= 0 ? Number(argv.splice(runsAt, 2)[1]) : 5;
 const defaultMesh = join(root, 'public', 'meshes', 'cgal', 'bunny00.off');
@@ -57,7 +59,7 @@ if (!existsSync(wasmBundle)) {
   console.error('error: build/cli/bench-wasm.mjs missing; run node scripts/setup.mjs');
   process.exit(1);
 }
-const { benchWasm, benchIo } = await import(pathToFileURL(wasmBundle).href);
+const { benchWasm, benchIo, benchInspect } = await import(pathToFileURL(wasmBundle).href);
 
 /**
  * The rows: one level of each scheme on the bench mesh, then two levels of
@@ -187,6 +189,70 @@ function cgalDataMesh(name) {
   return existsSync(path) ? path : null;
 }
 
+/**
+ * Inspect's computations (CGAL's self-intersection test, smallest enclosing
+ * sphere, convex hull, minimum width), each alone, on CGAL's larger meshes
+ * and their Loop level 2, natively (subdiv_bench_inspect) and in the WASM
+ * core: the tutorial's table, with the ratio. The figures must agree.
+ */
+function benchInspectTable() {
+  const buildDir = join(root, 'build', 'native');
+  console.log('[bench] building subdiv_bench_inspect (Release)');
+  run('cmake', ['--build', buildDir, '--parallel', '2', '--target', 'subdiv_bench_inspect']);
+  const data = join(root, 'public', 'meshes', 'cgal');
+  const cases = [
+    ['elephant.off', 0],
+    ['elephant.off', 2],
+    ['mannequin-devil.off', 0],
+    ['mannequin-devil.off', 2],
+    ['bunny00.off', 0],
+  ].filter(([name]) => existsSync(join(data, name)));
+  return (async () => {
+    const rows = [];
+    for (const [name, levels] of cases) {
+      const path = join(data, name);
+      const label = `${basename(name, '.off')}${levels ? `, Loop x${levels}` : ''}`;
+      console.log(`[bench] inspect ${label}: native, then WASM in Node`);
+      const n = JSON.parse(run(join(buildDir, 'subdiv_bench_inspect'), [path, String(levels)]).trim());
+      const w = await benchInspect(path, levels);
+      for (const [k, nr] of n.rows.entries()) {
+        const wr = w.rows[k];
+        const same =
+          nr.skipped === wr.skipped && Math.abs(nr.figure - wr.figure) <= 1e-12 * Math.max(1, Math.abs(nr.figure));
+        if (!same) {
+          console.error(`error: ${nr.computation} on ${label}: native gives ${nr.figure}, WASM ${wr.figure}`);
+          process.exit(1);
+        }
+        rows.push({
+          mesh: label,
+          faces: n.faces,
+          computation: nr.computation,
+          figure: nr.figure,
+          skipped: nr.skipped,
+          native_ms: nr.ms,
+          wasm_ms: wr.ms,
+          ratio: nr.skipped ? null : wr.ms / nr.ms,
+        });
+      }
+    }
+    const num = (x, n) => (x === null ? '–' : x.toFixed(n)).padStart(11);
+    console.log(
+      `\n${pad('mesh', 26)}${'faces'.padStart(9)}  ${pad('computation', 20)}${['figure', 'native ms', 'WASM ms', 'WASM/nat'].map((h) => h.padStart(11)).join('')}`,
+    );
+    for (const r of rows) {
+      const figure = r.skipped ? 'skipped' : Number.isInteger(r.figure) ? String(r.figure) : r.figure.toPrecision(6);
+      console.log(
+        `${pad(r.mesh, 26)}${String(r.faces).padStart(9)}  ${pad(r.computation, 20)}${figure.padStart(11)}` +
+          `${num(r.skipped ? null : r.native_ms, 1)}${num(r.skipped ? null : r.wasm_ms, 1)}${num(r.ratio, 2)}`,
+      );
+    }
+    console.log(
+      "(figure: crossing face pairs, sphere radius, hull vertices, width; each computation alone, one run, the core's own time; width skipped above 4000 hull vertices)",
+    );
+    return rows;
+  })();
+}
+
 /** Parse and write MB/s of OFF and OBJ through the WASM module. */
 async function benchInputOutput() {
   const bunny = join(root, 'public', 'meshes', 'cgal', 'bunny00.off');
@@ -214,17 +280,18 @@ async function benchInputOutput() {
 }
 
 const pad = (s, n) => String(s).padEnd(n);
-const schemes = ioOnly || appOnly ? { rows: [], raw: [] } : await benchSchemes();
-const io = appOnly ? [] : await benchInputOutput();
+const schemes = ioOnly || appOnly || inspectOnly ? { rows: [], raw: [] } : await benchSchemes();
+const io = appOnly || inspectOnly ? [] : await benchInputOutput();
+const inspect = ioOnly || appOnly ? [] : await benchInspectTable();
 const machine = `${cpus()[0]?.model ?? 'unknown CPU'}, ${cpus().length} cores, Node ${process.version}`;
-if (!appOnly) console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);
+if (!appOnly && !inspectOnly) console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);
 // A page load and two steps per run: at most three.
 const appRuns = Math.min(runs, 3);
-const app = ioOnly ? [] : await benchApp(appRuns);
-printApp(app, appRuns);
+const app = ioOnly || inspectOnly ? [] : await benchApp(appRuns);
+if (app.length > 0) printApp(app, appRuns);
 
 mkdirSync(join(root, 'build'), { recursive: true });
 writeFileSync(
   join(root, 'build', 'bench.json'),
-  `${JSON.stringify({ mesh: basename(meshPath), runs, machine, ...schemes, io, app }, null, 2)}\n`,
+  `${JSON.stringify({ mesh: basename(meshPath), runs, machine, ...schemes, io, inspect, app }, null, 2)}\n`,
 );

@@ -6,27 +6,12 @@
  * levels, the surfaces coloured unless `distance="0"`; a bad `beside` is
  * named; removing it leaves one view.
  */
-import type { Locator } from '@playwright/test';
 import { cliDistance } from './cli-distance';
 import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
-import { readPng } from './helpers';
+import { isViridisPurple, pixelsWhere } from './pixels';
 
 const CUBE = 'public/meshes/cube.off';
-
-/** Pixels of `view` in the distance colours' dark end (viridis purple: red and blue well above green). */
-async function purplePixels(view: Locator): Promise<number> {
-  await view.page().evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-  // omitBackground: an RGBA picture, which readPng decodes.
-  const png = readPng(await view.screenshot({ omitBackground: true }));
-  let count = 0;
-  for (let y = 0; y < png.height; ++y)
-    for (let x = 0; x < png.width; ++x) {
-      const [r, g, b] = png.pixel(x, y);
-      if (r > g + 25 && b > g + 25) count++;
-    }
-  return count;
-}
 
 test('beside="loop": two panes, levels together, the distance of subdiv compare in caption and event, colours', async ({
   embed,
@@ -71,11 +56,11 @@ test('beside="loop": two panes, levels together, the distance of subdiv compare 
   });
 
   await test.step('coloured by the distance; distance="0" shows neither colours nor caption', async () => {
-    expect(await purplePixels(viewer.locator('.stage'))).toBeGreaterThan(1000);
+    expect(await pixelsWhere(viewer.locator('.stage'), isViridisPurple)).toBeGreaterThan(1000);
     await embed.waitForLevel('plain', 2);
     const plain = page.locator('#plain');
     await expect(plain.locator('canvas')).toHaveCount(2);
-    expect(await purplePixels(plain.locator('.stage'))).toBe(0);
+    expect(await pixelsWhere(plain.locator('.stage'), isViridisPurple)).toBe(0);
     expect(await embed.caption('plain', 'distance')).toBe('');
     expect(await embed.events('distance', 'plain')).toEqual([]);
   });
@@ -102,7 +87,7 @@ test('beside="loop": two panes, levels together, the distance of subdiv compare 
     await viewer.evaluate((e) => e.removeAttribute('beside'));
     await expect(viewer.locator('canvas')).toHaveCount(1);
     expect(await embed.caption('sb', 'distance')).toBe('');
-    expect(await purplePixels(viewer.locator('.stage'))).toBe(0);
+    expect(await pixelsWhere(viewer.locator('.stage'), isViridisPurple)).toBe(0);
   });
 });
 

@@ -8,10 +8,9 @@
  * the app's code.
  */
 import { readFileSync } from 'node:fs';
-import type { Locator } from '@playwright/test';
 import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
-import { readPng } from './helpers';
+import { isViridisPurple, pixelsWhere } from './pixels';
 
 /** The sample cube's 8 corners as its file lists them (level 0). */
 const CORNERS = readFileSync('public/meshes/cube.off', 'utf8')
@@ -24,19 +23,6 @@ const CORNERS = readFileSync('public/meshes/cube.off', 'utf8')
 const VIEW = '4.2,3.4,5.6,0,0,0,0,1,0';
 
 type Viewer = HTMLElementTagNameMap['subdiv-viewer'];
-
-/** Pixels of `view` whose colour is the basis view's dark end (viridis purple: red and blue well above green). */
-async function purplePixels(view: Locator): Promise<number> {
-  await view.page().evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-  const png = readPng(await view.screenshot({ omitBackground: true }));
-  let count = 0;
-  for (let y = 0; y < png.height; ++y)
-    for (let x = 0; x < png.width; ++x) {
-      const [r, g, b] = png.pixel(x, y);
-      if (r > g + 25 && b > g + 25) count++;
-    }
-  return count;
-}
 
 /** The polygon corners of an SVG export of the view, in CSS pixels from its top left, and its size. */
 function svgPixels(svg: string): { width: number; height: number; points: [number, number][] } {
@@ -202,8 +188,8 @@ test('tool="basis": control vertex 0 of the torus reaches 169 of the 768 vertice
   expect(await embed.caption('b')).toContain(max.toFixed(4));
   await expect(viewer.locator('[part="tool"] .tool-bar')).toBeVisible();
   // The surface in the colour bar's colours; the same torus without the tool has none of them.
-  expect(await purplePixels(viewer.locator('canvas'))).toBeGreaterThan(2000);
-  expect(await purplePixels(page.locator('#plain canvas'))).toBe(0);
+  expect(await pixelsWhere(viewer.locator('canvas'), isViridisPurple)).toBeGreaterThan(2000);
+  expect(await pixelsWhere(page.locator('#plain canvas'), isViridisPurple)).toBe(0);
   // The control mesh stays as the attributes have it (off).
   expect(await viewer.evaluate((e) => (e as Viewer).state?.overlays.control)).toBe(false);
   await viewer.screenshot({ path: 'test-results/screenshots/embed-tools-basis-torus.png' });
@@ -223,7 +209,7 @@ test('tool="basis": control vertex 0 of the torus reaches 169 of the 768 vertice
   await test.step('tool removed: the colours go', async () => {
     await viewer.evaluate((e) => e.removeAttribute('tool'));
     await expect(viewer.locator('[part="tool"]')).toBeHidden();
-    await expect.poll(() => purplePixels(viewer.locator('canvas'))).toBe(0);
+    await expect.poll(() => pixelsWhere(viewer.locator('canvas'), isViridisPurple)).toBe(0);
   });
 });
 

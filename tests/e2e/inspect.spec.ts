@@ -7,34 +7,20 @@
  */
 import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import type { Locator } from '@playwright/test';
 import { figure } from '../../web/ui/inspect-panel';
 import { expect, test } from './fixtures';
-import { readPng } from './helpers';
+import { isInspectRed, pixelsWhere } from './pixels';
 
 const STELLA = readFileSync('tests/fixtures/stella-octangula.off', 'utf8');
 const CUBE = readFileSync('tests/fixtures/cube.off', 'utf8');
 
-/** Pixels of the view in Inspect's red (crossing faces): red high, green and blue low. */
-async function redPixels(canvas: Locator): Promise<number> {
-  await canvas.page().evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-  const png = readPng(await canvas.screenshot());
-  let count = 0;
-  for (let y = 0; y < png.height; ++y)
-    for (let x = 0; x < png.width; ++x) {
-      const [r, g, b] = png.pixel(x, y);
-      if (r > 100 && g < 60 && b < 80) count++;
-    }
-  return count;
-}
-
 test('the stella octangula: 12 crossing pairs of faces, red on the view, listed, one framed', async ({ app }) => {
   await app.open();
   await app.load('stella-octangula.off', STELLA);
-  expect(await redPixels(app.canvas)).toBe(0);
+  expect(await pixelsWhere(app.canvas, isInspectRed)).toBe(0);
   await app.byTestId('inspect.run').click();
   await expect(app.byTestId('inspect.self-intersections')).toHaveText(/^12 pairs of faces \(8 faces\) · [\d.,]+ ms$/);
-  expect(await redPixels(app.canvas)).toBeGreaterThan(2000);
+  expect(await pixelsWhere(app.canvas, isInspectRed)).toBeGreaterThan(2000);
   // The first pairs, by face number: each face of one tetrahedron crosses three of the other.
   const pairs = app.byTestId('inspect.pair');
   await expect(pairs).toHaveCount(12);

@@ -12,6 +12,7 @@ import {
   exportMesh,
   exportMeshChunks,
   formatFromFileName,
+  inspectMesh,
   parseMesh,
   predictSize,
   subdivide,
@@ -112,4 +113,36 @@ export async function benchIo(sources: IoSource[], runs: number): Promise<IoTimi
     }
   }
   return rows;
+}
+
+/** One of Inspect's computations on one mesh: its figure (pairs, radius, hull vertices, width) and the core's milliseconds. */
+export interface InspectTiming {
+  computation: 'self-intersections' | 'sphere' | 'hull' | 'width';
+  figure: number;
+  ms: number;
+  skipped: boolean;
+}
+
+/**
+ * Each of Inspect's computations alone on the mesh at `path` (or its level
+ * `loopLevels` of Loop, triangulated first), in the WASM core, as
+ * bench_inspect.cpp does natively: one run each, the core's own times.
+ */
+export async function benchInspect(
+  path: string,
+  loopLevels: number,
+): Promise<{ vertices: number; faces: number; rows: InspectTiming[] }> {
+  await initNode();
+  let mesh = parseMesh(readFileSync(path, 'utf8'), formatFromFileName(path) ?? 'off');
+  if (loopLevels > 0) mesh = subdivide(mesh, { scheme: 'loop', levels: loopLevels, triangulate: true });
+  const rows: InspectTiming[] = [];
+  const s = inspectMesh(mesh, { selfIntersections: true }).selfIntersections;
+  if (s) rows.push({ computation: 'self-intersections', figure: s.pairs, ms: s.ms, skipped: false });
+  const sphere = inspectMesh(mesh, { sphere: true }).sphere;
+  if (sphere) rows.push({ computation: 'sphere', figure: sphere.radius, ms: sphere.ms, skipped: false });
+  const hull = inspectMesh(mesh, { hull: true }).hull;
+  if (hull) rows.push({ computation: 'hull', figure: hull.vertices, ms: hull.ms, skipped: false });
+  const width = inspectMesh(mesh, { width: true }).width;
+  if (width) rows.push({ computation: 'width', figure: width.width, ms: width.ms, skipped: width.skipped });
+  return { vertices: mesh.positions.length / 3, faces: mesh.faceSizes.length, rows };
 }

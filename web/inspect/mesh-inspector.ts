@@ -64,6 +64,9 @@ export class MeshInspector {
         this.results.clear();
         this.framed = null;
       }
+      // Levels dropped or computed again (a scheme change, a crease edit): their results go.
+      const live = new Set(Array.from({ length: state.levelCount }, (_, k) => viewer.levelId(k)));
+      for (const id of this.results.keys()) if (!live.has(id)) this.results.delete(id);
       if (this.framed && this.framedId !== viewer.levelId()) this.framed = null;
       if (this.active && !state.busy && !this.busy && state.levelCount > 0 && !this.results.has(viewer.levelId()))
         void this.inspect();
