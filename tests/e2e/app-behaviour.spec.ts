@@ -360,3 +360,65 @@ for (const [device, viewport] of [
     await app.snapshot(`05-layout-${device}`);
   });
 }
+
+test('keyboard after a choice with the mouse: S subdivides, the menu keeps its value; a step is said to screen readers', async ({
+  app,
+}) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  const scheme = app.byTestId('controls.scheme');
+  await test.step('a scheme picked with the mouse, then S: level 1 of that scheme', async () => {
+    // The pointer presses the menu (headless Chromium's own popup would take the keys: the
+    // press is dispatched), then an option is chosen.
+    await scheme.dispatchEvent('pointerdown');
+    await scheme.focus();
+    await scheme.selectOption('doo-sabin');
+    await expect(scheme).toBeFocused();
+    await app.page.keyboard.press('s');
+    await expect.poll(async () => (await app.state()).level).toBe(1);
+    const state = await app.state();
+    expect(state.scheme).toBe('doo-sabin');
+    await expect(scheme).toHaveValue('doo-sabin');
+    // Doo-Sabin on the cube: a face per vertex, edge and face, 8 + 12 + 6 = 26.
+    await expect(app.byTestId('controls.level-status')).toHaveText('Level 1: 8 triangles, 18 quads, genus 0');
+  });
+  await test.step('the same menu reached with Tab keeps its type-ahead: S is not a shortcut there', async () => {
+    await scheme.focus();
+    await app.page.keyboard.press('Shift+Tab');
+    await app.page.keyboard.press('Tab');
+    await expect(scheme).toBeFocused();
+    await app.page.keyboard.press('s');
+    // Nothing was subdivided (no option's label starts with S, so the value stays too).
+    await app.page.waitForTimeout(300);
+    expect((await app.state()).levelCount).toBe(2);
+  });
+});
+
+test('a phone (390 × 844): no sideways scrolling, every sample and export item inside the screen and tappable', async ({
+  app,
+}) => {
+  await app.page.setViewportSize({ width: 390, height: 844 });
+  await app.open();
+  await app.openSample('cube', 'cube.off');
+  expect(await app.page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(390);
+  const inside = async (selector: string) => {
+    const boxes = await app.page
+      .locator(selector)
+      .evaluateAll((els) => els.map((e) => e.getBoundingClientRect()).map((r) => [r.left, r.right, r.width]));
+    expect(boxes.length).toBeGreaterThan(0);
+    for (const [left, right, width] of boxes) {
+      expect(width).toBeGreaterThan(0);
+      expect(left).toBeGreaterThanOrEqual(0);
+      expect(right).toBeLessThanOrEqual(390);
+    }
+  };
+  await app.byTestId('gallery').locator('summary').click();
+  await inside('[data-testid^="gallery."]:not([data-testid="gallery"])');
+  await app.page.screenshot({ path: 'test-results/screenshots/phone-samples.png' });
+  // The last sample, at the menu's far corner, opens.
+  await app.byTestId('gallery.holes').click();
+  await expect(app.byTestId('facts.model')).toHaveText('holes.off');
+  await app.byTestId('export-panel').locator('summary').click();
+  await inside('[data-testid^="export."]');
+  expect(await app.page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(390);
+});

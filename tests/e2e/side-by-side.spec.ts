@@ -181,6 +181,8 @@ test('Catmull-Clark beside Loop on the cube: linked panes, levels together and a
 
   await test.step('the link keeps the panes: beside=loop, and a reload shows them again', async () => {
     await app.waitForHash('beside', 'loop');
+    // The hash is written a moment after the last step.
+    await app.waitForHash('levels', '2');
     await app.page.reload();
     await expect
       .poll(async () => (await side()).panes.map((p) => [p.scheme, p.level]))

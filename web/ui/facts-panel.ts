@@ -63,8 +63,11 @@ export class FactsPanel {
   private readonly controlEdges: HTMLElement;
   private readonly tags: HTMLElement;
   private readonly time: HTMLElement;
+  /** The one line the panel shows when folded: model, level, faces. */
+  private readonly summary: HTMLElement;
 
-  constructor() {
+  /** Folded at first on narrow screens (a phone, a tablet upright), where the list would cover the model. */
+  constructor(narrow = window.matchMedia('(max-width: 820px)').matches) {
     const list = el('dl', { className: 'facts' });
     const row = (key: string, label: string): HTMLElement => {
       const dd = el('dd', { testId: `facts.${key}`, text: '–' });
@@ -77,11 +80,15 @@ export class FactsPanel {
     this.controlEdges = row('control-edges', 'Control edges');
     this.tags = row('tags', 'Tags');
     this.time = row('time', 'Last step');
-    this.element = el(
-      'section',
+    this.summary = el('summary', { testId: 'facts.summary', className: 'facts-summary', text: 'Facts' });
+    const details = el(
+      'details',
       { testId: 'facts', className: 'facts-panel', attrs: { 'aria-label': 'Facts of the shown level' } },
+      this.summary,
       list,
     );
+    details.open = !narrow;
+    this.element = details;
   }
 
   update(state: ViewerState): void {
@@ -97,5 +104,6 @@ export class FactsPanel {
     this.tags.textContent = tagText(state.tags);
     this.tags.title = state.tags?.notes.join('\n') ?? '';
     this.time.textContent = state.stepMs === null ? '–' : `${state.stepMs.toFixed(1)} ms`;
+    this.summary.textContent = state.facts ? `Level ${state.level} · ${faceTypes(state.facts)}` : 'Facts';
   }
 }

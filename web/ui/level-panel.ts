@@ -1,6 +1,7 @@
 /** Subdivide (+1 level), Reset, and a scrubber over the computed levels 0..N. */
 import type { ViewerState } from '../viewer/subdiv-viewer';
 import { button, el, section, uniqueId } from './dom';
+import { faceTypes } from './facts-panel';
 
 export interface LevelPanelHandlers {
   onSubdivide: () => void;
@@ -14,6 +15,8 @@ export class LevelPanel {
   private readonly reset: HTMLButtonElement;
   private readonly range: HTMLInputElement;
   private readonly label: HTMLOutputElement;
+  /** What a screen reader hears after a step or a scrub: the level's faces and genus. */
+  private readonly status: HTMLElement;
 
   constructor(handlers: LevelPanelHandlers) {
     this.subdivide = button('Subdivide', 'controls.subdivide', handlers.onSubdivide, 'Compute one more level (S)');
@@ -25,13 +28,15 @@ export class LevelPanel {
       attrs: { type: 'range', min: '0', max: '0', step: '1', value: '0', id: rangeId },
     });
     this.range.addEventListener('input', () => handlers.onLevel(Number(this.range.value)));
-    this.label = el('output', { testId: 'controls.level-label', attrs: { for: rangeId, 'aria-live': 'polite' } });
+    this.label = el('output', { testId: 'controls.level-label', attrs: { for: rangeId } });
+    this.status = el('p', { testId: 'controls.level-status', className: 'visually-hidden', attrs: { role: 'status' } });
     this.element = section(
       'Levels',
       'level-panel',
       el('div', { className: 'row' }, this.subdivide, this.reset),
       el('label', { attrs: { for: rangeId }, text: 'Level' }),
       el('div', { className: 'row' }, this.range, this.label),
+      this.status,
     );
   }
 
@@ -45,5 +50,9 @@ export class LevelPanel {
     this.range.disabled = max === 0;
     this.range.setAttribute('aria-valuetext', `Level ${state.level} of ${max}`);
     this.label.textContent = loaded ? `${state.level} / ${max}` : '–';
+    const said =
+      state.facts && !state.busy ? `Level ${state.level}: ${faceTypes(state.facts)}, genus ${state.facts.genus}` : '';
+    // Only a change: a live region reads each new text.
+    if (said && said !== this.status.textContent) this.status.textContent = said;
   }
 }

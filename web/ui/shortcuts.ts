@@ -46,11 +46,18 @@ export const SHORTCUTS: readonly { keys: string; action: string }[] = [
   { keys: 'Ctrl+C', action: 'Copy the view as PNG' },
 ];
 
+/**
+ * Menus last chosen from with the pointer. There a shortcut letter is a
+ * shortcut (S subdivides after picking a scheme with the mouse), never
+ * type-ahead that would change the menu; a menu reached with the keyboard
+ * (Tab) keeps its type-ahead.
+ */
+const pointerChosen = new WeakSet<HTMLSelectElement>();
+
 function isTyping(target: EventTarget | null): boolean {
   if (!(target instanceof HTMLElement)) return false;
-  if (target.isContentEditable || target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement) {
-    return true;
-  }
+  if (target instanceof HTMLSelectElement) return !pointerChosen.has(target);
+  if (target.isContentEditable || target instanceof HTMLTextAreaElement) return true;
   if (target instanceof HTMLInputElement) {
     return !['checkbox', 'radio', 'range', 'button', 'submit', 'reset', 'file'].includes(target.type);
   }
@@ -110,8 +117,32 @@ export function installShortcuts(
     run();
   };
   const listener = onKeyDown as EventListener;
+  // Which menus the pointer chose from (see pointerChosen): marked on a press, unmarked when Tab
+  // brings the focus there.
+  let tabbing = false;
+  const onPointerDown = (event: Event) => {
+    const target = event.composedPath()[0];
+    const select = target instanceof HTMLOptionElement ? target.parentElement : target;
+    if (select instanceof HTMLSelectElement) pointerChosen.add(select);
+  };
+  const onTab = (event: Event) => {
+    tabbing = (event as KeyboardEvent).key === 'Tab';
+  };
+  const onFocusIn = (event: Event) => {
+    const target = event.composedPath()[0];
+    if (tabbing && target instanceof HTMLSelectElement) pointerChosen.delete(target);
+    tabbing = false;
+  };
+  root.addEventListener('pointerdown', onPointerDown, true);
+  root.addEventListener('keydown', onTab, true);
+  root.addEventListener('focusin', onFocusIn, true);
   root.addEventListener('keydown', listener);
-  return () => root.removeEventListener('keydown', listener);
+  return () => {
+    root.removeEventListener('keydown', listener);
+    root.removeEventListener('pointerdown', onPointerDown, true);
+    root.removeEventListener('keydown', onTab, true);
+    root.removeEventListener('focusin', onFocusIn, true);
+  };
 }
 
 /** The sidebar's collapsible list of the shortcuts. */
