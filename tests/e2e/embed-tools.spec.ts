@@ -110,6 +110,9 @@ test('tool="stencils": vertex 7 of the cube is 5/12 of its corner, 1/6 of each e
     await viewer.evaluate((e) => {
       (e as HTMLElement).style.width = '';
     });
+    // The view follows the width a frame later (a resize observer): the next step aims at its picture.
+    await expect.poll(async () => Math.round((await viewer.locator('canvas').boundingBox())?.width ?? 0)).toBe(640);
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   });
 
   await test.step('a click on the view picks another vertex, written into the vertex attribute', async () => {
