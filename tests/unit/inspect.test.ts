@@ -110,6 +110,18 @@ describe('subdiv inspect', () => {
     expect(out.change.diagonal).toBeLessThan(1);
   });
 
+  it('names the file, the line and the problem of a mesh it cannot inspect', () => {
+    const bad = subdiv(['inspect', join(FIXTURES_DIR, 'invalid', 'index-out-of-range.off')]);
+    expect(bad.status).toBe(1);
+    expect(bad.stdout).toBe('');
+    expect(bad.stderr).toMatch(
+      /^error: .*index-out-of-range\.off: line 8: face index 12 is out of range \(4 vertices\)\n$/,
+    );
+    const quads = subdiv(['inspect', join(FIXTURES_DIR, 'cube.off'), '--scheme', 'loop', '--levels', '1']);
+    expect(quads.status).toBe(1);
+    expect(quads.stderr).toMatch(/^error: .*cube\.off: loop needs a triangle mesh: 6 of 6 faces are not triangles/);
+  });
+
   it('refuses options of other commands', () => {
     const r = subdiv(['inspect', join(FIXTURES_DIR, 'cube.off'), '-o', 'x.off']);
     expect(r.status).toBe(2);
