@@ -43,29 +43,21 @@ export class EmbedPanes {
     this.sides.onChange((state) => this.show(state));
   }
 
-  /** Brings the panes to the attributes: the schemes beside, the distance on or off, the display (`background` as the first pane's). */
+  /** Brings the panes to the attributes: the schemes beside, the distance on or off, the background (the first pane's). */
   apply(background: string | null, dark: boolean): void {
     const want = this.host.readState();
     const beside = this.sides.beside();
     if (beside.join(' ') !== want.beside.join(' ')) this.sides.setBeside(want.beside);
     if (this.sides.state.colours !== want.distance) this.sides.setColours(want.distance);
-    for (let i = 1; i < this.sides.state.count; ++i) {
-      const pane = this.sides.viewer(i);
-      if (!pane) continue;
-      pane.view.setBackground(background, dark);
-      for (const [name, on] of Object.entries(want.overlays)) {
-        const overlay = name as keyof typeof want.overlays;
-        if (pane.state.overlays[overlay] !== on) pane.setOverlay(overlay, on);
-      }
-    }
+    // Render mode and overlays follow the first pane (SideBySide); the background is the element's.
+    for (const pane of this.sides.viewers().slice(1)) pane.view.setBackground(background, dark);
   }
 
   /** Frees the panes' GPU copies (the element is far out of view), or draws them again. */
   releaseGpu(release: boolean): void {
-    for (let i = 1; i < this.sides.state.count; ++i) {
-      const pane = this.sides.viewer(i);
-      if (release) pane?.releaseGpu();
-      else pane?.view.requestRender();
+    for (const pane of this.sides.viewers().slice(1)) {
+      if (release) pane.releaseGpu();
+      else pane.view.requestRender();
     }
   }
 
