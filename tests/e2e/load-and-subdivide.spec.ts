@@ -86,11 +86,15 @@ test('loop and √3 on a triangle mesh need no triangulation', async ({ app }) =
   await app.load('tetrahedron.off', TETRAHEDRON);
   for (const scheme of ['loop', 'sqrt3']) {
     await test.step(scheme, async () => {
+      // Loop is stepped to level 2; √3, picked there, computes its own levels 1 and 2 at once.
       await app.chooseScheme(scheme);
       await expect(app.byTestId('controls.triangle-note')).toBeHidden();
-      expect((await app.state()).levelCount).toBe(1);
-      await app.subdivide();
-      await app.subdivide();
+      if (scheme === 'loop') {
+        expect((await app.state()).levelCount).toBe(1);
+        await app.subdivide();
+        await app.subdivide();
+      }
+      expect(await app.state()).toMatchObject({ level: 2, levelCount: 3 });
       const shown = await app.facts();
       expect({ vertices: shown.vertices, edges: shown.edges, faces: shown.faces }).toEqual(
         expectedClosedCounts(scheme, TETRA_COUNTS, 2),
@@ -116,7 +120,9 @@ test('a scheme that needs triangles fails clearly on quads and offers to triangu
   expect((await app.state()).triangulate).toBe(true);
 });
 
-test('reset drops computed levels and their GPU geometry; a new scheme starts from level 0', async ({ app }) => {
+test('reset drops computed levels and their GPU geometry; a new scheme replaces the levels it computes again', async ({
+  app,
+}) => {
   await app.open();
   await app.load('cube.off', CUBE);
   // Level 0 draws a surface and its edge lines once rendered: that is the baseline.
@@ -134,8 +140,13 @@ test('reset drops computed levels and their GPU geometry; a new scheme starts fr
   await app.canvasPixels();
   expect((await app.state()).gpuGeometries).toBe(baseline);
   await app.subdivide();
+  await app.canvasPixels();
+  const oneLevel = (await app.state()).gpuGeometries;
   await app.chooseScheme('doo-sabin');
-  expect(await app.state()).toMatchObject({ level: 0, levelCount: 1 });
+  expect(await app.state()).toMatchObject({ level: 1, levelCount: 2 });
+  // Doo-Sabin's level 1 drawn in place of Catmull-Clark's: as many geometries as before.
+  await app.canvasPixels();
+  expect((await app.state()).gpuGeometries).toBe(oneLevel);
   await test.step('loading another model frees the old one', async () => {
     await app.load('tetrahedron.off', TETRAHEDRON);
     await app.canvasPixels();

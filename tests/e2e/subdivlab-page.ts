@@ -118,9 +118,11 @@ export class SubdivLabPage {
     return this.idle();
   }
 
-  async chooseScheme(scheme: string): Promise<void> {
+  /** Picks `scheme` in the menu and waits until the shown level is computed with it. */
+  async chooseScheme(scheme: string): Promise<SubdivLabTestState> {
     await this.byTestId('controls.scheme').selectOption(scheme);
     await expect.poll(async () => (await this.state()).scheme).toBe(scheme);
+    return this.idle();
   }
 
   /** Presses Subdivide and waits for the next level to be shown. */
@@ -146,7 +148,8 @@ export class SubdivLabPage {
   /** Reads the facts panel (text the user sees). */
   async facts(): Promise<ShownFacts> {
     const read = async (key: string) => (await this.byTestId(`facts.${key}`).textContent()) ?? '';
-    const num = async (key: string) => Number(await read(key));
+    // Counts are shown with thousands separators ("1,536").
+    const num = async (key: string) => Number((await read(key)).replaceAll(',', ''));
     return {
       vertices: await num('vertices'),
       edges: await num('edges'),

@@ -173,7 +173,7 @@ describe('text into the heap (strings encoded by the engine, bytes copied by it)
       ...readdirSync(FIXTURES_DIR).filter((n) => formatFromFileName(n)),
       ...readdirSync(join(FIXTURES_DIR, 'invalid')).map((n) => join('invalid', n)),
     ];
-    expect(names.length).toBe(31);
+    expect(names.length).toBe(34);
     let errors = 0;
     for (const name of names) {
       const format = formatFromFileName(name) ?? 'off';

@@ -15,7 +15,7 @@ import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
 import { button, el } from '../ui/dom';
 import { DropZone } from '../ui/drop-zone';
 import { EmbedDialog } from '../ui/embed-dialog';
-import { ErrorBanner } from '../ui/error-banner';
+import { type ErrorAction, ErrorBanner } from '../ui/error-banner';
 import { ExportPanel } from '../ui/export-panel';
 import { FactsPanel } from '../ui/facts-panel';
 import { createGallery } from '../ui/gallery';
@@ -32,7 +32,13 @@ import { formatBytes } from '../viewer/memory-budget';
 import { fetchMesh, LoadError, type MeshText, readFile } from '../viewer/mesh-source';
 import { checkRulesInCore } from '../viewer/rules-check';
 import { hostLabel, hostNeedsTriangles, schemeInfo } from '../viewer/scheme-info';
-import { type LargeStepInfo, type SchemeOptions, SubdivViewer, type ViewerState } from '../viewer/subdiv-viewer';
+import {
+  type LargeStepInfo,
+  type SchemeOptions,
+  type StepSettings,
+  SubdivViewer,
+  type ViewerState,
+} from '../viewer/subdiv-viewer';
 import { AppTools } from './app-tools';
 import { ExportActions } from './export-actions';
 import { SAMPLES } from './samples';
@@ -64,6 +70,10 @@ export class AppShell {
   private readonly firstVisitHint: HTMLElement;
   private readonly fileInput: HTMLInputElement;
   private lastError: TestError | null = null;
+  /** What the shown error is about: a step's goes once a later step succeeds. */
+  private errorKind: 'step' | 'other' | null = null;
+  /** The scheme being switched to, shown in the menu while its levels are computed. */
+  private pendingScheme: SchemeName | null = null;
   private schemes: string[] = [];
   /** Rules of the custom scheme (from the rules panel) and quad-triangle's border option. */
   private customRules: RuleSet | null = null;
@@ -116,8 +126,8 @@ export class AppShell {
     stage.append(this.emptyHint, this.firstVisitHint, this.facts.element, this.progress.element);
 
     this.scheme = new SchemePanel({
-      onScheme: (s) => this.setScheme(s),
-      onTriangulate: (t) => this.viewer.setTriangulate(t),
+      onScheme: (s) => void this.switchScheme(s),
+      onTriangulate: (t) => void this.changeSteps({ triangulate: t }),
       onFixedBoundary: (fixed) => {
         this.fixedBoundary = fixed;
         void this.recompute(0);
@@ -132,7 +142,10 @@ export class AppShell {
     });
     this.levels = new LevelPanel({
       onSubdivide: () => void this.subdivide(),
-      onReset: () => this.viewer.reset(),
+      onReset: () => {
+        this.viewer.reset();
+        this.stepSucceeded();
+      },
       onLevel: (k) => this.viewer.setLevel(k),
     });
     this.tools = new AppTools({
@@ -377,8 +390,12 @@ export class AppShell {
     return this.openText(displayName, () => fetchMesh(src, document.baseURI), { kind: 'url', src });
   }
 
-  /** Shows the error about `source`; the previous model and its levels stay. */
-  showError(source: string, error: unknown, retryWithTriangulation = false): void {
+  /**
+   * Shows the error about `source`, with `action` if given; the previous
+   * model and its levels stay. A step's error ('step') goes once a later
+   * step succeeds; others stay until dismissed or a model loads.
+   */
+  showError(source: string, error: unknown, action?: ErrorAction, kind: 'step' | 'other' = 'other'): void {
     if (error instanceof CancelledError) return;
     const message = messageOf(error);
     const where = error instanceof LoadError ? error.source : source;
@@ -387,16 +404,7 @@ export class AppShell {
       message,
       code: error instanceof SubdivError ? error.code : error instanceof LoadError ? 'load_error' : 'error',
     };
-    const action =
-      retryWithTriangulation && error instanceof SubdivError && error.code === 'not_triangles'
-        ? {
-            label: 'Triangulate and subdivide',
-            run: () => {
-              this.viewer.setTriangulate(true);
-              void this.subdivide();
-            },
-          }
-        : undefined;
+    this.errorKind = kind;
     this.errors.show(where, message, action);
   }
 
@@ -410,6 +418,7 @@ export class AppShell {
       this.sharePanel.clear();
       this.errors.hide();
       this.lastError = null;
+      this.errorKind = null;
       this.showTagNotes(mesh.name);
       return true;
     } catch (error) {
@@ -441,11 +450,53 @@ export class AppShell {
     this.tagNotice = notes.length > 0;
   }
 
-  /** Chooses a scheme (menu or link): levels of the previous one are dropped. */
+  /** Chooses a scheme for a link (which then steps to its own level): the levels of the previous one are dropped. */
   private setScheme(scheme: SchemeName): void {
     this.viewer.setScheme(scheme);
-    this.viewer.setSchemeOptions(this.schemeOptions());
+    this.viewer.setSchemeOptions(this.schemeOptions(scheme));
     if (scheme === 'custom') void this.rules.ensureRules();
+  }
+
+  /** The scheme menu: the levels are computed again with `scheme` up to the level shown. */
+  private async switchScheme(scheme: SchemeName): Promise<void> {
+    this.pendingScheme = scheme;
+    this.update(this.viewer.state);
+    try {
+      if (scheme === 'custom') await this.rules.ensureRules();
+      if (this.pendingScheme !== scheme) return;
+      await this.changeSteps({ scheme, options: this.schemeOptions(scheme) });
+    } finally {
+      if (this.pendingScheme === scheme) this.pendingScheme = null;
+      this.update(this.viewer.state);
+    }
+  }
+
+  /**
+   * Computes the levels again with `change` (SubdivViewer.changeSteps). A
+   * failure leaves the previous levels and says why; a step's earlier error
+   * goes once the change succeeded.
+   */
+  private async changeSteps(change: Partial<StepSettings>): Promise<boolean> {
+    try {
+      await this.viewer.changeSteps(change);
+      this.stepSucceeded();
+      return true;
+    } catch (error) {
+      const triangulate =
+        error instanceof SubdivError && error.code === 'not_triangles' && !change.triangulate
+          ? { label: 'Triangulate and switch', run: () => void this.changeSteps({ ...change, triangulate: true }) }
+          : undefined;
+      this.showError(this.viewer.state.modelName ?? 'mesh', error, triangulate, 'step');
+      return false;
+    }
+  }
+
+  /** Hides the error of an earlier step (a step, a switch or a reset just succeeded): it no longer holds. */
+  private stepSucceeded(): void {
+    if (this.errorKind !== 'step') return;
+    this.errors.hide();
+    this.lastError = null;
+    this.errorKind = null;
   }
 
   private async subdivide(): Promise<boolean> {
@@ -454,16 +505,27 @@ export class AppShell {
     try {
       // The custom scheme steps with the panel's rules: wait for the first preset.
       if (state.scheme === 'custom' && !this.customRules) await this.rules.ensureRules();
-      return await this.viewer.subdivide();
+      const stepped = await this.viewer.subdivide();
+      if (stepped) this.stepSucceeded();
+      return stepped;
     } catch (error) {
-      this.showError(state.modelName ?? 'mesh', error, true);
+      const triangulate =
+        error instanceof SubdivError && error.code === 'not_triangles'
+          ? {
+              label: 'Triangulate and subdivide',
+              run: () => {
+                this.viewer.setTriangulate(true);
+                void this.subdivide();
+              },
+            }
+          : undefined;
+      this.showError(state.modelName ?? 'mesh', error, triangulate, 'step');
       return false;
     }
   }
 
   /** Options of every step besides scheme and level: the custom rules, quad-triangle's border. */
-  private schemeOptions(): SchemeOptions {
-    const scheme = this.viewer.state.scheme;
+  private schemeOptions(scheme = this.viewer.state.scheme): SchemeOptions {
     if (scheme === 'custom') return this.customRules ? { rules: this.customRules } : {};
     if (scheme === 'quad-triangle') return { smoothBoundary: !this.fixedBoundary };
     return {};
@@ -474,8 +536,11 @@ export class AppShell {
    * others) and computes again up to the shown level, or `minLevel` if higher.
    */
   private async recompute(minLevel: number): Promise<void> {
+    // Rules applied while another scheme is shown wait for the custom scheme to be chosen.
+    const scheme = this.viewer.state.scheme;
+    if (scheme !== 'custom' && scheme !== 'quad-triangle') return;
+    if (!(await this.changeSteps({ options: this.schemeOptions() }))) return;
     const target = Math.max(minLevel, this.viewer.state.level);
-    this.viewer.setSchemeOptions(this.schemeOptions());
     while (this.viewer.state.levelCount > 0 && this.viewer.state.level < target) {
       if (!(await this.subdivide())) return;
     }
@@ -510,8 +575,9 @@ export class AppShell {
       needsTriangles: rules ? hostNeedsTriangles(rules.host) : undefined,
       needsTrianglesWho: rules ? `The ${hostLabel(rules.host)} host` : undefined,
       fixedBoundary: this.fixedBoundary,
+      pending: this.pendingScheme ?? undefined,
     });
-    this.rules.element.hidden = state.scheme !== 'custom';
+    this.rules.element.hidden = (this.pendingScheme ?? state.scheme) !== 'custom';
     this.levels.update(state);
     this.display.update(state, savedView() !== null);
     this.facts.update(state);

@@ -5,11 +5,11 @@ import type { TagSummary, ViewerState } from '../viewer/subdiv-viewer';
 import { el } from './dom';
 
 const ROWS: readonly { key: string; label: string; value: (f: MeshFacts) => string }[] = [
-  { key: 'vertices', label: 'Vertices', value: (f) => String(f.vertices) },
-  { key: 'edges', label: 'Edges', value: (f) => String(f.edges) },
-  { key: 'faces', label: 'Faces', value: (f) => String(f.faces) },
-  { key: 'components', label: 'Components', value: (f) => String(f.components) },
-  { key: 'boundaries', label: 'Boundaries', value: (f) => String(f.boundaries) },
+  { key: 'vertices', label: 'Vertices', value: (f) => f.vertices.toLocaleString('en') },
+  { key: 'edges', label: 'Edges', value: (f) => f.edges.toLocaleString('en') },
+  { key: 'faces', label: 'Faces', value: (f) => f.faces.toLocaleString('en') },
+  { key: 'components', label: 'Components', value: (f) => f.components.toLocaleString('en') },
+  { key: 'boundaries', label: 'Boundaries', value: (f) => f.boundaries.toLocaleString('en') },
   { key: 'euler', label: 'Euler characteristic', value: (f) => String(f.eulerCharacteristic) },
   { key: 'genus', label: 'Genus', value: (f) => String(f.genus) },
   { key: 'face-types', label: 'Face types', value: faceTypes },
@@ -32,8 +32,8 @@ export function faceTypes(f: MeshFacts): string {
  * core kept (primal schemes only: dual schemes and √3 keep none, shown as –).
  */
 function controlEdges(f: MeshFacts, level: number): string {
-  if (level === 0) return String(f.edges);
-  return f.controlEdges > 0 ? String(f.controlEdges) : '–';
+  if (level === 0) return f.edges.toLocaleString('en');
+  return f.controlEdges > 0 ? f.controlEdges.toLocaleString('en') : '–';
 }
 
 const BOUNDARY_NAMES: Record<TagSummary['boundary'], string> = {
@@ -100,6 +100,8 @@ export class FactsPanel {
       const cell = this.cells.get(key);
       if (cell) cell.textContent = state.facts ? value(state.facts) : '–';
     }
+    const types = this.cells.get('face-types');
+    if (types) types.title = state.facts ? `${faceTypes(state.facts)}: the faces by their number of sides` : '';
     this.controlEdges.textContent = state.facts ? controlEdges(state.facts, state.level) : '–';
     this.tags.textContent = tagText(state.tags);
     this.tags.title = state.tags?.notes.join('\n') ?? '';

@@ -2,6 +2,7 @@
 import type { ViewerState } from '../viewer/subdiv-viewer';
 import { button, el, section, uniqueId } from './dom';
 import { faceTypes } from './facts-panel';
+import { LevelTable } from './level-table';
 
 export interface LevelPanelHandlers {
   onSubdivide: () => void;
@@ -17,6 +18,7 @@ export class LevelPanel {
   private readonly label: HTMLOutputElement;
   /** What a screen reader hears after a step or a scrub: the level's faces and genus. */
   private readonly status: HTMLElement;
+  private readonly table = new LevelTable();
 
   constructor(handlers: LevelPanelHandlers) {
     this.subdivide = button('Subdivide', 'controls.subdivide', handlers.onSubdivide, 'Compute one more level (S)');
@@ -37,6 +39,7 @@ export class LevelPanel {
       el('label', { attrs: { for: rangeId }, text: 'Level' }),
       el('div', { className: 'row' }, this.range, this.label),
       this.status,
+      this.table.element,
     );
   }
 
@@ -52,6 +55,7 @@ export class LevelPanel {
     this.label.textContent = loaded ? `${state.level} / ${max}` : '–';
     const said =
       state.facts && !state.busy ? `Level ${state.level}: ${faceTypes(state.facts)}, genus ${state.facts.genus}` : '';
+    this.table.update(state);
     // Only a change: a live region reads each new text.
     if (said && said !== this.status.textContent) this.status.textContent = said;
   }

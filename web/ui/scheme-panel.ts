@@ -24,6 +24,8 @@ export interface SchemeExtras {
   needsTrianglesWho?: string;
   /** quad-triangle's border option. */
   fixedBoundary: boolean;
+  /** A scheme being switched to: the menu shows it while its levels are computed. */
+  pending?: SchemeName;
 }
 
 export class SchemePanel {
@@ -91,8 +93,9 @@ export class SchemePanel {
   }
 
   update(state: ViewerState, extras: SchemeExtras): void {
-    if (!this.select.disabled && this.select.value !== state.scheme) this.select.value = state.scheme;
-    const info = schemeInfo(state.scheme);
+    const scheme = extras.pending ?? state.scheme;
+    if (!this.select.disabled && this.select.value !== scheme) this.select.value = scheme;
+    const info = schemeInfo(scheme);
     this.description.textContent = info.description;
     this.triangulate.checked = state.triangulate;
     const facts = state.facts;
@@ -102,7 +105,7 @@ export class SchemePanel {
     this.triangleNote.textContent = show
       ? `${extras.needsTrianglesWho ?? info.label} needs triangles; this mesh has ${others} other face${others === 1 ? '' : 's'}.`
       : '';
-    this.fixedBoundaryRow.hidden = state.scheme !== 'quad-triangle';
+    this.fixedBoundaryRow.hidden = scheme !== 'quad-triangle';
     this.fixedBoundary.checked = extras.fixedBoundary;
   }
 }

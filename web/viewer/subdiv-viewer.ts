@@ -45,13 +45,20 @@ import { SceneView } from '../render/scene-view';
 import { exportSvg } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
-import { linearTwin } from './scheme-info';
+import { linearTwin, schemeInfo } from './scheme-info';
 
 /**
  * Options of a step other than the scheme, the level and triangulation:
  * e.g. issue 4's `rules` (custom scheme) and `smoothBoundary`.
  */
 export type SchemeOptions = Omit<SubdivideOptions, 'scheme' | 'levels' | 'startLevel' | 'triangulate'>;
+
+/** What every step is computed with besides the level it starts from. */
+export interface StepSettings {
+  scheme: SchemeName;
+  triangulate: boolean;
+  options: SchemeOptions;
+}
 
 /** What a large-step confirmation is told. */
 export interface LargeStepInfo {
@@ -131,6 +138,8 @@ export interface ViewerState {
   /** Number of computed levels (levels 0..levelCount−1 exist). */
   levelCount: number;
   facts: MeshFacts | null;
+  /** The facts of every computed level, 0..levelCount−1. */
+  levelFacts: readonly MeshFacts[];
   /** The shown level's OpenSubdiv tags, counted (null: it has none). */
   tags: TagSummary | null;
   /** Milliseconds of the step that produced the shown level (null at level 0). */
@@ -228,6 +237,7 @@ export class SubdivViewer {
       level: this.current,
       levelCount: this.levels.length,
       facts: level?.data.facts ?? null,
+      levelFacts: this.levels.map((l) => l.data.facts),
       tags: tagSummary(level?.data.tags ?? null),
       stepMs: level && this.current > 0 ? level.data.ms : null,
       renderMode: this.view.renderMode,
@@ -330,24 +340,100 @@ export class SubdivViewer {
     const target = this.current;
     const { tags: _old, ...untagged } = source;
     const mesh: Mesh = tags ? { ...untagged, tags } : untagged;
-    this.setBusy({ kind: 'subdivide', label: 'Applying the tags…', since: performance.now() });
+    const made = await this.computeLevels('Applying the tags', generation, target, this.steps(), () =>
+      this.core.prepare(mesh),
+    );
+    this.source = mesh;
+    this.replaceLevels(made, 0, target);
+  }
+
+  /**
+   * Changes what every step is computed with (scheme, triangulation,
+   * options) and computes the levels again up to the one shown, one step at
+   * a time, as a tag edit does: the previous levels stay shown until the new
+   * ones are all there. If the change cannot reach that level (a step fails,
+   * is declined or cancelled, or a load comes first) it rejects, and the
+   * previous scheme, options and levels stay. From level 0 it only drops the
+   * levels above.
+   */
+  async changeSteps(change: Partial<StepSettings>): Promise<void> {
+    if (this.disposed) return;
+    const settings = { ...this.steps(), ...change };
+    if (JSON.stringify(settings) === JSON.stringify(this.steps())) return;
+    const target = this.current;
+    if (target === 0 || !this.source) {
+      this.cancel();
+      this.setSteps(settings);
+      this.truncate();
+      return;
+    }
+    this.cancel();
+    const generation = ++this.generation;
+    const over = await this.withHandle(0, (h) => this.core.predictSize(h, this.stepOptions(0, target, settings)));
+    const estimatedBytes = stepBytes(over);
+    if (estimatedBytes > this.memoryBudget) {
+      const info = { level: target, prediction: over, estimatedBytes, budgetBytes: this.memoryBudget };
+      if (!(await this.confirmLargeStep(info)) || generation !== this.generation) throw new CancelledError();
+    }
+    const made = await this.computeLevels(schemeInfo(settings.scheme).label, generation, target, settings);
+    this.setSteps(settings);
+    this.replaceLevels(made, 1, target);
+  }
+
+  /** The settings every step of the shown levels was computed with. */
+  steps(): StepSettings {
+    return { scheme: this.scheme, triangulate: this.triangulate, options: this.schemeOptions };
+  }
+
+  private setSteps(settings: StepSettings): void {
+    this.scheme = settings.scheme;
+    this.triangulate = settings.triangulate;
+    this.schemeOptions = { ...settings.options };
+  }
+
+  /**
+   * Levels 0..target computed with `settings`, one step at a time, from a
+   * new level 0 (`prepare`) or the shown one; busy meanwhile, the label
+   * (`what`) followed by the level in progress. Rejects, with
+   * what it made released, if a step fails or `generation` moves on.
+   */
+  private async computeLevels(
+    what: string,
+    generation: number,
+    target: number,
+    settings: StepSettings,
+    prepare?: () => Promise<LevelData>,
+  ): Promise<LevelData[]> {
+    const since = performance.now();
+    this.setBusy({ kind: 'subdivide', label: what, since });
     const made: LevelData[] = [];
     try {
-      made.push(await this.core.prepare(mesh));
-      for (let k = 1; k <= target && generation === this.generation; ++k)
-        made.push(await this.core.subdivide(made[k - 1].handle, this.stepOptions(k - 1, 1)));
+      made.push(prepare ? await prepare() : this.levels[0].data);
+      for (let k = 1; k <= target && generation === this.generation; ++k) {
+        const options = this.stepOptions(k - 1, 1, settings);
+        this.setBusy({ kind: 'subdivide', label: `${what}: level ${k} of ${target}…`, since });
+        made.push(
+          await (k === 1 && !prepare
+            ? this.withHandle(0, (h) => this.core.subdivide(h, options))
+            : this.core.subdivide(made[k - 1].handle, options)),
+        );
+      }
       if (generation !== this.generation) throw new CancelledError();
+      return made;
     } catch (error) {
-      this.core.release(made.map((level) => level.handle));
+      this.core.release((prepare ? made : made.slice(1)).map((level) => level.handle));
       throw error;
     } finally {
       if (generation === this.generation) this.setBusy(null);
     }
-    for (const level of this.levels) level.graphics?.dispose();
-    this.core.release(this.levels.map((l) => l.data.handle));
-    this.source = mesh;
-    this.levels = made.map((data) => this.newLevel(data));
-    this.current = target;
+  }
+
+  /** Puts `made` in place of levels `from`.. and shows level `current`. */
+  private replaceLevels(made: LevelData[], from: number, current: number): void {
+    for (const level of this.levels.slice(from)) level.graphics?.dispose();
+    this.core.release(this.levels.slice(from).map((l) => l.data.handle));
+    this.levels = [...this.levels.slice(0, from), ...made.slice(from).map((data) => this.newLevel(data))];
+    this.current = current;
     this.show();
   }
 
@@ -742,13 +828,13 @@ export class SubdivViewer {
   }
 
   /** Options of `levels` steps from level `from` under the current scheme and options. */
-  private stepOptions(from: number, levels: number): SubdivideOptions {
+  private stepOptions(from: number, levels: number, settings = this.steps()): SubdivideOptions {
     return {
-      ...this.schemeOptions,
-      scheme: this.scheme,
+      ...settings.options,
+      scheme: settings.scheme,
       levels,
       startLevel: from,
-      triangulate: this.triangulate,
+      triangulate: settings.triangulate,
       renderBuffers: true,
     };
   }

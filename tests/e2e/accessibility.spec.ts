@@ -1,0 +1,64 @@
+/**
+ * axe-core (Deque's accessibility engine, the rules of WCAG 2.1 A and AA
+ * and its best practices) finds no violation in the app's main states: empty,
+ * a model with levels, the custom rules, open menus, an error, side by side
+ * with Inspect's results, and a phone.
+ */
+import { readFileSync } from 'node:fs';
+import AxeBuilder from '@axe-core/playwright';
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures';
+
+const CUBE = readFileSync('public/meshes/cube.off', 'utf8');
+
+/** Runs axe on the page and fails with each violation's rule, impact and first elements. */
+async function expectNoViolations(page: Page, state: string): Promise<void> {
+  const results = await new AxeBuilder({ page })
+    .withTags(['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'])
+    .analyze();
+  const found = results.violations.map(
+    (v) =>
+      `${v.id} (${v.impact}): ${v.help} — ${v.nodes
+        .slice(0, 3)
+        .map((n) => n.target.join(' '))
+        .join('; ')}`,
+  );
+  expect(found, `axe violations with ${state}`).toEqual([]);
+  // Rules that ran: a check that axe looked at the page at all.
+  expect(results.passes.length, state).toBeGreaterThan(20);
+}
+
+test('no axe violations: empty, a model with levels, the rules, open menus, an error', async ({ app }) => {
+  test.setTimeout(120_000);
+  await app.open();
+  await expectNoViolations(app.page, 'the empty app');
+  await app.load('cube.off', CUBE);
+  await app.subdivide();
+  await app.subdivide();
+  await expectNoViolations(app.page, 'the cube at level 2');
+  await app.chooseScheme('custom');
+  await expectNoViolations(app.page, 'the custom rules');
+  await app.byTestId('gallery').locator('summary').click();
+  await expectNoViolations(app.page, 'the samples menu open');
+  await app.page.keyboard.press('Escape');
+  await app.dropFile('broken.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n');
+  await expect(app.errorBanner).toBeVisible();
+  await expectNoViolations(app.page, 'an error shown');
+});
+
+test('no axe violations: side by side with distances, the results of Inspect, a phone', async ({ app }) => {
+  test.setTimeout(120_000);
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await app.subdivide();
+  await app.byTestId('inspect.run').click();
+  await expect(app.byTestId('inspect.self-intersections')).toHaveText(/^none · /);
+  await app.idle();
+  await expectNoViolations(app.page, 'Inspect’s results');
+  await app.byTestId('side.count').selectOption('2');
+  await expect.poll(async () => app.page.getByTestId('pane.1.scheme').count()).toBe(1);
+  await app.idle();
+  await expectNoViolations(app.page, 'two panes side by side');
+  await app.page.setViewportSize({ width: 390, height: 844 });
+  await expectNoViolations(app.page, 'a phone');
+});
