@@ -131,6 +131,7 @@ test('the teaching samples, and the counts of every level in a table with thousa
     /^3\s*1,922\s*3,840\s*1,920\s*×4$/,
   ]);
   await expect(app.byTestId('levels.row.3')).toHaveAttribute('aria-current', 'true');
+  await app.snapshot('scheme-switch-level-table');
   await app.scrubTo(1);
   await expect(app.byTestId('levels.row.1')).toHaveAttribute('aria-current', 'true');
   await expect(app.byTestId('levels.row.3')).not.toHaveAttribute('aria-current', 'true');
@@ -141,5 +142,4 @@ test('the teaching samples, and the counts of every level in a table with thousa
     await app.openSample('saddle', 'saddle.off');
     expect(await app.facts()).toMatchObject({ vertices: 25, faces: 16, boundaries: 1 });
   });
-  await app.snapshot('scheme-switch-level-table');
 });

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/compare.h"
+#include "core/halfedges.h"
 #include "core/hausdorff.h"
 #include "core/inspect.h"
 #include "core/level_view.h"
@@ -593,6 +594,21 @@ val to_js_xyz(const std::array<double, 3>& p) {
   return out;
 }
 
+/// halfedge_table (halfedges.h): { next, prev, opposite, target, face }.
+val js_halfedge_table(const val& mesh) {
+  return guarded([&] {
+    const Result<Halfedge_table> r = halfedge_table(from_js_mesh(mesh));
+    if (!r.ok()) return to_js_status(r.status);
+    val out = ok_object();
+    out.set("next", to_js_array("Uint32Array", r.value.next));
+    out.set("prev", to_js_array("Uint32Array", r.value.prev));
+    out.set("opposite", to_js_array("Uint32Array", r.value.opposite));
+    out.set("target", to_js_array("Uint32Array", r.value.target));
+    out.set("face", to_js_array("Int32Array", r.value.face));
+    return out;
+  });
+}
+
 /// inspect_mesh (inspect.h): the measures and each computation asked for,
 /// with its milliseconds.
 val js_inspect_mesh(const val& mesh, bool self_intersections, bool sphere,
@@ -924,6 +940,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("compare_meshes", &subdivlab::js_compare_meshes);
   emscripten::function("hausdorff_distance", &subdivlab::js_hausdorff_distance);
   emscripten::function("inspect_mesh", &subdivlab::js_inspect_mesh);
+  emscripten::function("halfedge_table", &subdivlab::js_halfedge_table);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

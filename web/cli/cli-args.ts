@@ -10,6 +10,7 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
        subdiv compare A B
        subdiv inspect INPUT [--self-intersections] [--sphere] [--hull] [--width] [--all]
                      [--scheme S --levels K] ...
+       subdiv halfedges INPUT [--scheme S --levels K] ...
 
   INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
   --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
@@ -56,13 +57,19 @@ self-intersecting face pairs (exact predicates), the smallest enclosing sphere, 
 hull and the minimum width with its planes, each with the milliseconds it took. With
 --levels K, also the input's measures and the level's as shares of them.
 
+subdiv halfedges INPUT prints, as JSON, the halfedge table of the mesh (or of its level K
+of --scheme S, with --levels K; default 0) as CGAL's Surface_mesh numbers it: for each
+halfedge h its next, prev and opposite halfedge (h xor 1), the vertex it points to and the
+face it bounds (null on the border), one halfedge per line; vertices and faces in the
+file's order (level K's as "subdiv INPUT --levels K -o OUT" writes them).
+
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
 
 /** A command line that made sense. */
 export interface CliArgs {
-  /** `subdiv info|stencil|check|compare|inspect ...`, or the default, subdividing. */
-  command: 'subdivide' | 'info' | 'stencil' | 'check' | 'compare' | 'inspect';
+  /** `subdiv info|stencil|check|compare|inspect|halfedges ...`, or the default, subdividing. */
+  command: 'subdivide' | 'info' | 'stencil' | 'check' | 'compare' | 'inspect' | 'halfedges';
   input: string;
   scheme: string;
   levels: number;
@@ -136,17 +143,19 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const stencil = positionals[0] === 'stencil';
   const check = positionals[0] === 'check';
   const inspect = positionals[0] === 'inspect';
-  const inputs = stencil || check || inspect ? positionals.slice(1) : positionals;
+  const halfedges = positionals[0] === 'halfedges';
+  const inputs = stencil || check || inspect || halfedges ? positionals.slice(1) : positionals;
   if (check && inputs.length !== 2) throw new UsageError('subdiv check takes two files: CONTROL RESULT');
   if (!check && inputs.length !== 1) {
     throw new UsageError(inputs.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
   }
-  const command = stencil ? 'stencil' : check ? 'check' : inspect ? 'inspect' : 'subdivide';
+  const command = stencil ? 'stencil' : check ? 'check' : inspect ? 'inspect' : halfedges ? 'halfedges' : 'subdivide';
   const computations = ['self-intersections', 'sphere', 'hull', 'width', 'all'] as const;
   const refused = {
     stencil: ['output', 'stats', 'levels', 'tolerance', ...computations],
     check: ['output', 'stats', 'level', 'vertex', ...computations],
     inspect: ['output', 'stats', 'level', 'vertex', 'tolerance'],
+    halfedges: ['output', 'stats', 'level', 'vertex', 'tolerance', ...computations],
     subdivide: ['level', 'vertex', 'tolerance', ...computations],
   } as const;
   for (const name of refused[command]) {
@@ -170,7 +179,7 @@ export function parseCliArgs(argv: string[]): CliArgs {
   }
   const levels = stencil
     ? count(values.level, '--level', 1)
-    : count(values.levels ?? (inspect ? '0' : '1'), '--levels', 0);
+    : count(values.levels ?? (inspect || halfedges ? '0' : '1'), '--levels', 0);
   // inspect: every computation unless some are chosen.
   const chosen = computations.some((name) => values[name] === true);
   const wants = (name: (typeof computations)[number]) => !chosen || values.all === true || values[name] === true;

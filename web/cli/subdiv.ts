@@ -12,6 +12,7 @@ import { fraction, vertexStencil } from '../core/stencils';
 import {
   compareMeshes,
   formatFromFileName,
+  halfedgeTable,
   hausdorffDistance,
   hostOf,
   inspectMesh,
@@ -24,6 +25,7 @@ import {
 } from '../core/subdiv-core';
 import { SubdivError } from '../core/subdiv-error';
 import { type CliArgs, parseCliArgs, USAGE, UsageError } from './cli-args';
+import { halfedgeJson } from './halfedge-json';
 
 /** Where the CLI writes; replaceable in tests. */
 export interface CliIo {
@@ -323,6 +325,23 @@ async function compare(args: CliArgs, io: CliIo): Promise<void> {
   io.stdout(`${JSON.stringify(report, null, 2)}\n`);
 }
 
+/** `subdiv halfedges`: the halfedge table of the mesh or its level K, as JSON (halfedge-json.ts). */
+async function halfedges(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
+  const text = readInput(args.input);
+  try {
+    const control = parseMesh(text, inputFormat(args.input, text));
+    const mesh = args.levels > 0 ? subdivide(control, subdivideOptions(args, rules)) : control;
+    const header = {
+      ...(args.levels > 0 ? { scheme: args.scheme, levels: args.levels } : {}),
+      vertices: mesh.positions.length / 3,
+      faces: mesh.faceSizes.length,
+    };
+    io.stdout(halfedgeJson(header, halfedgeTable(mesh)));
+  } catch (error) {
+    throw inputError(args, error);
+  }
+}
+
 async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'info') return info(args, io);
   if (args.command === 'compare') return compare(args, io);
@@ -335,6 +354,7 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'stencil') return stencil(args, io, rules);
   if (args.command === 'check') return check(args, io, rules);
   if (args.command === 'inspect') return inspect(args, io, rules);
+  if (args.command === 'halfedges') return halfedges(args, io, rules);
   const text = readInput(args.input);
   let result: Mesh;
   let ms: number;

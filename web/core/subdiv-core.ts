@@ -9,6 +9,7 @@
 
 import type { MeshComparison } from './compare';
 import createSubdivModule from './generated/subdivlab.mjs';
+import type { HalfedgeTable } from './halfedges';
 import type { Inspection, InspectOptions } from './inspect';
 import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
@@ -53,6 +54,7 @@ interface CoreModule {
     maxPairs: number,
   ): RawResult<Inspection>;
   hausdorff_distance(a: Mesh, b: Mesh, vertexDistances: boolean): RawResult<HausdorffDistance>;
+  halfedge_table(mesh: Mesh): RawResult<HalfedgeTable>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -308,6 +310,17 @@ export function hausdorffDistance(a: Mesh, b: Mesh, vertexDistances = false): Ha
  * and the self-intersections, smallest enclosing sphere, convex hull and
  * minimum width that `options` asks for.
  */
+/**
+ * The halfedge structure of `mesh` as CGAL's Surface_mesh numbers it
+ * (wasm/src/core/halfedges.h): per halfedge its next, prev, opposite,
+ * target vertex and face (−1 on the border); opposite(h) is h ^ 1.
+ * Throws SubdivError (invalid_mesh) on a mesh that is not valid.
+ */
+export function halfedgeTable(mesh: Mesh): HalfedgeTable {
+  const { ok: _ok, ...table } = unwrap(module().halfedge_table(mesh)) as HalfedgeTable & { ok: true };
+  return table;
+}
+
 export function inspectMesh(mesh: Mesh, options: InspectOptions = {}): Inspection {
   const o = options;
   const raw = module().inspect_mesh(
