@@ -12,7 +12,15 @@ import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import type { Mesh } from '../../web/core/mesh';
-import { halfedgeTable, meshFacts, parseMesh, subdivide } from '../../web/core/subdiv-core';
+import {
+  compareMeshes,
+  eulerOperator,
+  halfedgeTable,
+  meshFacts,
+  parseMesh,
+  sqrt3ByHand,
+  subdivide,
+} from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
 import { FIXTURES_DIR, loadFixture, toPlain } from './test-helpers';
 
@@ -130,5 +138,34 @@ describe('subdiv halfedges', () => {
       faceIndices: Uint32Array.of(0, 1, 2, 0, 1, 2),
     };
     expect(() => halfedgeTable(broken)).toThrow(SubdivError);
+  });
+});
+
+describe('Euler operators through the WASM core', () => {
+  it('split_face on the cube: 7 faces, χ = 2, CGAL valid; join_face across the new edge gives the cube back', () => {
+    const cube = loadFixture('cube.off');
+    const t = halfedgeTable(cube);
+    const split = eulerOperator(cube, 'split_face', 0, t.next[t.next[0]]);
+    expect(split.valid).toBe(true);
+    expect(split.facts).toMatchObject({ vertices: 8, edges: 13, faces: 7, eulerCharacteristic: 2, triangles: 2 });
+    const joined = eulerOperator(split.mesh, 'join_face', split.halfedge);
+    expect(compareMeshes(cube, joined.mesh, 1e-12)).toMatchObject({ match: true, sameFaces: true });
+  });
+
+  it('a broken precondition is a SubdivError naming it', () => {
+    const cube = loadFixture('cube.off');
+    expect(() => eulerOperator(cube, 'flip_edge', 0)).toThrow('only an edge between two triangles can be flipped');
+    expect(() => eulerOperator(cube, 'split_edge', 99)).toThrow('halfedge 99 does not exist (24 halfedges)');
+  });
+
+  it('√3 by hand on the icosahedron: 20 + 30 + 12 operators, ending at level 1 of the √3 scheme', () => {
+    const ico = loadFixture('icosahedron.off');
+    const walk = sqrt3ByHand(ico);
+    expect(walk).toMatchObject({ done: 62, total: 62, last: 'smooth vertex 11, valence 5' });
+    const scheme = subdivide(ico, { scheme: 'sqrt3', levels: 1 });
+    expect(compareMeshes(scheme, walk.mesh, 1e-12)).toMatchObject({ match: true, sameFaces: true });
+    const centres = sqrt3ByHand(ico, 20);
+    expect(centres.last).toBe('add_center_vertex (face 19)');
+    expect(meshFacts(centres.mesh)).toMatchObject({ vertices: 32, faces: 60 });
   });
 });

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/compare.h"
+#include "core/euler_ops.h"
 #include "core/halfedges.h"
 #include "core/hausdorff.h"
 #include "core/inspect.h"
@@ -779,6 +780,47 @@ class Js_render_sink : public Render_sink {
   }
 };
 
+/// apply_euler_op (euler_ops.h): { mesh, facts, valid, halfedge }.
+val js_euler_op(const val& mesh, const std::string& op_name, double h,
+                double h2) {
+  return guarded([&] {
+    Euler_request request;
+    if (!parse_euler_op(op_name, request.op) || !(h >= 0) || !(h2 >= 0) ||
+        h > 4294967295.0 || h2 > 4294967295.0) {
+      return to_js_status(
+          {Status_code::invalid_argument,
+           "Unknown Euler operator \"" + op_name + "\" or halfedge", 0});
+    }
+    request.h = static_cast<std::uint32_t>(h);
+    request.h2 = static_cast<std::uint32_t>(h2);
+    const Result<Euler_result> r = apply_euler_op(from_js_mesh(mesh), request);
+    if (!r.ok()) return to_js_status(r.status);
+    val out = ok_object();
+    out.set("mesh", to_js_mesh(r.value.mesh));
+    out.set("facts", to_js_facts(r.value.facts));
+    out.set("valid", r.value.valid);
+    out.set("halfedge", r.value.halfedge);
+    return out;
+  });
+}
+
+/// sqrt3_by_hand (euler_ops.h): { mesh, done, total, last }.
+val js_sqrt3_by_hand(const val& mesh, double steps) {
+  return guarded([&] {
+    const std::size_t n = steps >= 1e15
+                              ? SIZE_MAX
+                              : static_cast<std::size_t>(std::max(0.0, steps));
+    const Result<Sqrt3_walk> r = sqrt3_by_hand(from_js_mesh(mesh), n);
+    if (!r.ok()) return to_js_status(r.status);
+    val out = ok_object();
+    out.set("mesh", to_js_mesh(r.value.mesh));
+    out.set("done", static_cast<double>(r.value.done));
+    out.set("total", static_cast<double>(r.value.total));
+    out.set("last", r.value.last);
+    return out;
+  });
+}
+
 val js_facts(const val& mesh) {
   return guarded([&] {
     const Result<Mesh_facts> result = compute_facts(from_js_mesh(mesh));
@@ -941,6 +983,8 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("hausdorff_distance", &subdivlab::js_hausdorff_distance);
   emscripten::function("inspect_mesh", &subdivlab::js_inspect_mesh);
   emscripten::function("halfedge_table", &subdivlab::js_halfedge_table);
+  emscripten::function("euler_op", &subdivlab::js_euler_op);
+  emscripten::function("sqrt3_by_hand", &subdivlab::js_sqrt3_by_hand);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

@@ -9,7 +9,7 @@
 
 import type { MeshComparison } from './compare';
 import createSubdivModule from './generated/subdivlab.mjs';
-import type { HalfedgeTable } from './halfedges';
+import type { EulerOperator, EulerResult, HalfedgeTable, Sqrt3Walk } from './halfedges';
 import type { Inspection, InspectOptions } from './inspect';
 import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
@@ -55,6 +55,8 @@ interface CoreModule {
   ): RawResult<Inspection>;
   hausdorff_distance(a: Mesh, b: Mesh, vertexDistances: boolean): RawResult<HausdorffDistance>;
   halfedge_table(mesh: Mesh): RawResult<HalfedgeTable>;
+  euler_op(mesh: Mesh, op: string, h: number, h2: number): RawResult<EulerResult>;
+  sqrt3_by_hand(mesh: Mesh, steps: number): RawResult<Sqrt3Walk>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -319,6 +321,29 @@ export function hausdorffDistance(a: Mesh, b: Mesh, vertexDistances = false): Ha
 export function halfedgeTable(mesh: Mesh): HalfedgeTable {
   const { ok: _ok, ...table } = unwrap(module().halfedge_table(mesh)) as HalfedgeTable & { ok: true };
   return table;
+}
+
+/**
+ * Applies CGAL's Euler operator `op` to halfedge `h` of `mesh` (numbered as
+ * halfedgeTable numbers them; split_face also takes `h2`, the other corner's
+ * halfedge). Throws SubdivError: invalid_argument naming the broken
+ * precondition, invalid_mesh for a mesh that is not valid.
+ */
+export function eulerOperator(mesh: Mesh, op: EulerOperator, h: number, h2 = 0): EulerResult {
+  const { ok: _ok, ...result } = unwrap(module().euler_op(mesh, op, h, h2)) as EulerResult & { ok: true };
+  return result;
+}
+
+/**
+ * One √3 step of a closed triangle mesh written with Euler operators (a
+ * centre vertex per face, a flip per old edge, the old vertices smoothed),
+ * stopped after `steps` operators (Infinity: all; then it equals the √3
+ * scheme's level 1).
+ */
+export function sqrt3ByHand(mesh: Mesh, steps = Number.POSITIVE_INFINITY): Sqrt3Walk {
+  const raw = module().sqrt3_by_hand(mesh, Number.isFinite(steps) ? steps : 1e15);
+  const { ok: _ok, ...walk } = unwrap(raw) as Sqrt3Walk & { ok: true };
+  return walk;
 }
 
 export function inspectMesh(mesh: Mesh, options: InspectOptions = {}): Inspection {
