@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/compare.h"
+#include "core/curvature.h"
 #include "core/hausdorff.h"
 #include "core/inspect.h"
 #include "core/level_view.h"
@@ -587,6 +588,21 @@ val js_hausdorff_distance(const val& a, const val& b, bool vertex_distances) {
   });
 }
 
+/// vertex_curvature (curvature.h): NaN on border vertices.
+val js_vertex_curvature(const val& mesh) {
+  return guarded([&] {
+    const Result<Vertex_curvature> r = vertex_curvature(from_js_mesh(mesh));
+    if (!r.ok()) return to_js_status(r.status);
+    val out = ok_object();
+    out.set("gaussian", to_js_array("Float64Array", r.value.gaussian));
+    out.set("mean", to_js_array("Float64Array", r.value.mean));
+    out.set("angleDefect", to_js_array("Float64Array", r.value.angle_defect));
+    out.set("area", to_js_array("Float64Array", r.value.area));
+    out.set("borderVertices", static_cast<double>(r.value.border_vertices));
+    return out;
+  });
+}
+
 val to_js_xyz(const std::array<double, 3>& p) {
   val out = val::array();
   for (double x : p) out.call<void>("push", x);
@@ -924,6 +940,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("compare_meshes", &subdivlab::js_compare_meshes);
   emscripten::function("hausdorff_distance", &subdivlab::js_hausdorff_distance);
   emscripten::function("inspect_mesh", &subdivlab::js_inspect_mesh);
+  emscripten::function("vertex_curvature", &subdivlab::js_vertex_curvature);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

@@ -8,6 +8,7 @@
  */
 
 import type { MeshComparison } from './compare';
+import type { VertexCurvature } from './curvature';
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { Inspection, InspectOptions } from './inspect';
 import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
@@ -53,6 +54,7 @@ interface CoreModule {
     maxPairs: number,
   ): RawResult<Inspection>;
   hausdorff_distance(a: Mesh, b: Mesh, vertexDistances: boolean): RawResult<HausdorffDistance>;
+  vertex_curvature(mesh: Mesh): RawResult<VertexCurvature>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -301,6 +303,12 @@ export function hausdorffDistance(a: Mesh, b: Mesh, vertexDistances = false): Ha
     ok: true;
   };
   return h;
+}
+
+/** The discrete curvature at every vertex of `mesh` (curvature.ts); NaN at border vertices. */
+export function vertexCurvature(mesh: Mesh): VertexCurvature {
+  const { ok: _ok, ...c } = unwrap(module().vertex_curvature(mesh)) as VertexCurvature & { ok: true };
+  return c;
 }
 
 /**
