@@ -774,6 +774,8 @@ class Js_render_sink : public Render_sink {
         return "triangleFace";
       case Render_array::edges:
         return "edges";
+      case Render_array::border_edges:
+        return "borderEdges";
     }
     return "edges";
   }

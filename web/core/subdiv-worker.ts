@@ -83,8 +83,8 @@ function levelData(level: KeptLevel, buffers: RenderBuffers, ms: number): LevelD
 
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
 function buffersOf(level: LevelData): Transferable[] {
-  const { positions, boundingSphere, normals, triangles, edges, triangleFace } = level.buffers;
-  const arrays: ArrayBufferView[] = [positions, boundingSphere, normals, triangles, edges, triangleFace];
+  const { positions, boundingSphere, normals, triangles, edges, triangleFace, borderEdges } = level.buffers;
+  const arrays: ArrayBufferView[] = [positions, boundingSphere, normals, triangles, edges, triangleFace, borderEdges];
   arrays.push(level.controlEdges, ...tagArrays(level.tags));
   return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
 }
