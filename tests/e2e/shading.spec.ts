@@ -182,3 +182,15 @@ test('screenshots of the modes on real models', async ({ app }) => {
   await openAt(app, 'src=meshes/cgal/holes.off&scheme=loop&levels=1&mode=edges', 1);
   await app.snapshot('shading-holes-edges');
 });
+
+test('the iframe route takes the new modes from its query: curvature with its colour bar, zebra', async ({ page }) => {
+  await page.goto('./embed.html?src=meshes/icosahedron.off&scheme=loop&levels=2&mode=gaussian-curvature');
+  const bar = page.getByTestId('view.colour-bar');
+  await expect(bar).toBeVisible({ timeout: 30_000 });
+  await expect(page.getByTestId('view.colour-bar.title')).toHaveText('Gaussian curvature K (1/length²), level 2');
+  await page.screenshot({ path: 'test-results/screenshots/shading-embed-gaussian.png' });
+  await page.goto('./embed.html?src=meshes/icosahedron.off&scheme=loop&levels=2&mode=zebra');
+  const canvas = page.locator('canvas.subdiv-canvas');
+  await expect.poll(() => pixelsWhere(canvas, isStripeDark), { timeout: 30_000 }).toBeGreaterThan(5_000);
+  await expect(bar).toBeHidden();
+});

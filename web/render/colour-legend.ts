@@ -39,7 +39,7 @@ export class ColourLegend {
     this.element.dataset.testid = 'view.colour-bar';
     this.element.setAttribute('role', 'img');
     this.element.style.cssText =
-      'position:absolute;left:10px;bottom:10px;width:220px;padding:6px 8px;border-radius:4px;' +
+      'position:absolute;left:10px;bottom:10px;width:min(270px, calc(100% - 40px));box-sizing:border-box;padding:6px 8px;border-radius:4px;' +
       'font:11px/1.3 system-ui,sans-serif;color:#1f2937;background:rgba(255,255,255,0.9);' +
       'border:1px solid #d1d5db;pointer-events:none;display:none';
     const ends = document.createElement('div');
