@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -56,6 +57,7 @@ struct Recorder : Render_sink {
     if (which == Render_array::triangles) out.triangles = v;
     if (which == Render_array::triangle_face) out.triangle_face = v;
     if (which == Render_array::edges) out.edges = v;
+    if (which == Render_array::border_edges) out.border_edges = v;
   }
 };
 
@@ -147,6 +149,27 @@ std::vector<double> normals_by_fan(const Mesh_buffers& m) {
   return n;
 }
 
+TEST(RenderBuffers, BorderEdgesAreTheEdgesOfOneFace) {
+  // The open 3 x 3 grid (vertices 0..15 row by row): its border is the
+  // 12 unit edges around it, listed as the edges list gives them.
+  const Mesh_buffers grid = load("grid-open.off");
+  const Render_buffers r = render_buffers(grid);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> border;
+  for (std::size_t i = 0; i < r.border_edges.size(); i += 2)
+    border.emplace(r.border_edges[i], r.border_edges[i + 1]);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> expected;
+  for (std::uint32_t i = 0; i < 3; ++i) {
+    expected.emplace(i, i + 1);              // bottom row
+    expected.emplace(12 + i, 13 + i);        // top row
+    expected.emplace(4 * i, 4 * i + 4);      // left column
+    expected.emplace(4 * i + 3, 4 * i + 7);  // right column
+  }
+  EXPECT_EQ(r.border_edges.size(), 24u);
+  EXPECT_EQ(border, expected);
+  // A closed mesh has none.
+  EXPECT_TRUE(render_buffers(load("torus-quad.off")).border_edges.empty());
+}
+
 TEST(RenderBuffers, CubeIsTwelveTrianglesAndTwelveEdges) {
   const Mesh_buffers cube = load("cube.off");
   Recorder r;
@@ -154,8 +177,10 @@ TEST(RenderBuffers, CubeIsTwelveTrianglesAndTwelveEdges) {
   EXPECT_EQ(r.order, (std::vector<Render_array>{
                          Render_array::positions, Render_array::bounding_sphere,
                          Render_array::normals, Render_array::triangles,
-                         Render_array::triangle_face, Render_array::edges}));
+                         Render_array::triangle_face, Render_array::edges,
+                         Render_array::border_edges}));
   EXPECT_EQ(r.out.triangles.size(), 36u);
+  EXPECT_TRUE(r.out.border_edges.empty());
   EXPECT_EQ(r.out.triangle_face,
             (std::vector<std::uint32_t>{0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5}));
   ASSERT_EQ(r.out.edges.size(), 24u);

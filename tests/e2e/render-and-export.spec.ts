@@ -35,8 +35,11 @@ test('render modes, the control-mesh overlay and the bounding box change the pic
   }
   await test.step('key r cycles the modes', async () => {
     await app.page.locator('body').click({ position: { x: 5, y: 690 } });
-    await app.page.keyboard.press('r');
-    expect((await app.state()).renderMode).toBe('smooth');
+    // From wireframe on through reflection lines and the curvatures, back to the start.
+    for (const mode of ['zebra', 'mean-curvature', 'gaussian-curvature', 'smooth']) {
+      await app.page.keyboard.press('r');
+      expect((await app.state()).renderMode).toBe(mode);
+    }
     await app.page.keyboard.press('r');
     expect((await app.state()).renderMode).toBe('flat');
     expect((await app.canvasPixels()).equals(shots.get('flat') as Buffer)).toBe(true);

@@ -76,6 +76,19 @@ describe('render buffers from the core', () => {
     expect(Array.from(r.normals)).toEqual([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]);
   });
 
+  it('lists the border: the 12 outer edges of the open 3 × 3 grid, 4·2·3 = 24 at Catmull-Clark level 1, none on the torus', () => {
+    const grid = loadFixture('grid-open.off');
+    const r = viewMesh(grid).buffers;
+    expect(r.borderEdges.length / 2).toBe(12);
+    const edges = edgeSet(r.edges);
+    for (const e of edgeSet(r.borderEdges)) expect(edges.has(e)).toBe(true);
+    // Each border edge joins two border-row or border-column vertices of the 4 × 4 grid.
+    const onRim = (v: number) => v % 4 === 0 || v % 4 === 3 || v < 4 || v >= 12;
+    for (const v of r.borderEdges) expect(onRim(v)).toBe(true);
+    expect(viewMesh(subdivide(grid, { scheme: 'catmull-clark', levels: 1 })).buffers.borderEdges.length / 2).toBe(24);
+    expect(viewMesh(loadFixture('torus-quad.off')).buffers.borderEdges.length).toBe(0);
+  });
+
   it.each(['mixed-open.off', 'torus-quad.off', 'rhombicuboctahedron.off'])(
     'on %s and its Catmull-Clark level 2: edges = the facts edges, triangles = Σ(degree - 2)',
     (fixture) => {
@@ -112,7 +125,12 @@ describe('fanPolygons', () => {
       normals: new Float32Array(0),
       triangles: new Uint32Array(0),
     };
-    const polygons = fanPolygons({ ...empty, edges: new Uint32Array(0), triangleFace: new Uint32Array(0) });
+    const polygons = fanPolygons({
+      ...empty,
+      edges: new Uint32Array(0),
+      triangleFace: new Uint32Array(0),
+      borderEdges: new Uint32Array(0),
+    });
     expect(polygons.faceSizes.length).toBe(0);
     expect(polygons.faceIndices.length).toBe(0);
   });

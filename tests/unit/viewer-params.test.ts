@@ -66,7 +66,7 @@ describe('viewer parameters', () => {
     expect(problems).toEqual([
       'Unknown scheme "butterfly".',
       'levels must be a whole number from 0 to 8, not "-1".',
-      'Unknown render mode "glossy" (smooth, flat, edges, wireframe).',
+      'Unknown render mode "glossy" (smooth, flat, edges, wireframe, zebra, mean-curvature, gaussian-curvature).',
       'control-mesh must be 1 or 0, not "maybe".',
       'view must be nine numbers: camera position, target and up.',
       'controls must be none, minimal or full, not "some".',

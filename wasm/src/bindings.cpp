@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/compare.h"
+#include "core/curvature.h"
 #include "core/euler_ops.h"
 #include "core/halfedges.h"
 #include "core/hausdorff.h"
@@ -589,6 +590,21 @@ val js_hausdorff_distance(const val& a, const val& b, bool vertex_distances) {
   });
 }
 
+/// vertex_curvature (curvature.h): NaN on border vertices.
+val js_vertex_curvature(const val& mesh) {
+  return guarded([&] {
+    const Result<Vertex_curvature> r = vertex_curvature(from_js_mesh(mesh));
+    if (!r.ok()) return to_js_status(r.status);
+    val out = ok_object();
+    out.set("gaussian", to_js_array("Float64Array", r.value.gaussian));
+    out.set("mean", to_js_array("Float64Array", r.value.mean));
+    out.set("angleDefect", to_js_array("Float64Array", r.value.angle_defect));
+    out.set("area", to_js_array("Float64Array", r.value.area));
+    out.set("borderVertices", static_cast<double>(r.value.border_vertices));
+    return out;
+  });
+}
+
 val to_js_xyz(const std::array<double, 3>& p) {
   val out = val::array();
   for (double x : p) out.call<void>("push", x);
@@ -775,6 +791,8 @@ class Js_render_sink : public Render_sink {
         return "triangleFace";
       case Render_array::edges:
         return "edges";
+      case Render_array::border_edges:
+        return "borderEdges";
     }
     return "edges";
   }
@@ -985,6 +1003,7 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("halfedge_table", &subdivlab::js_halfedge_table);
   emscripten::function("euler_op", &subdivlab::js_euler_op);
   emscripten::function("sqrt3_by_hand", &subdivlab::js_sqrt3_by_hand);
+  emscripten::function("vertex_curvature", &subdivlab::js_vertex_curvature);
   emscripten::function("facts", &subdivlab::js_facts);
   emscripten::function("view_mesh", &subdivlab::js_view_mesh);
   emscripten::function("read_view", &subdivlab::js_read_view);

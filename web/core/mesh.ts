@@ -144,4 +144,6 @@ export interface RenderBuffers {
   edges: Uint32Array;
   /** For each triangle, the polygon (face) it came from. */
   triangleFace: Uint32Array;
+  /** The edges of one face only (the border), as {@link edges} gives them; empty on a closed mesh. */
+  borderEdges: Uint32Array;
 }

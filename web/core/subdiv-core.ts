@@ -8,6 +8,7 @@
  */
 
 import type { MeshComparison } from './compare';
+import type { VertexCurvature } from './curvature';
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { EulerOperator, EulerResult, HalfedgeTable, Sqrt3Walk } from './halfedges';
 import type { Inspection, InspectOptions } from './inspect';
@@ -57,6 +58,7 @@ interface CoreModule {
   halfedge_table(mesh: Mesh): RawResult<HalfedgeTable>;
   euler_op(mesh: Mesh, op: string, h: number, h2: number): RawResult<EulerResult>;
   sqrt3_by_hand(mesh: Mesh, steps: number): RawResult<Sqrt3Walk>;
+  vertex_curvature(mesh: Mesh): RawResult<VertexCurvature>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
   read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
@@ -305,6 +307,12 @@ export function hausdorffDistance(a: Mesh, b: Mesh, vertexDistances = false): Ha
     ok: true;
   };
   return h;
+}
+
+/** The discrete curvature at every vertex of `mesh` (curvature.ts); NaN at border vertices. */
+export function vertexCurvature(mesh: Mesh): VertexCurvature {
+  const { ok: _ok, ...c } = unwrap(module().vertex_curvature(mesh)) as VertexCurvature & { ok: true };
+  return c;
 }
 
 /**

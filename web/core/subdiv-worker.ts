@@ -5,6 +5,7 @@
  * (never ./generated/), answers one request at a time and transfers results.
  */
 import { basisFunction } from './basis';
+import { curvatureBuffers } from './curvature';
 import { inspectionBuffers } from './inspect';
 import type { Mesh, MeshFacts, MeshTags, RenderBuffers } from './mesh';
 import { orientation } from './orientation';
@@ -22,6 +23,7 @@ import {
   stepStencils,
   subdivide,
   subdivideForView,
+  vertexCurvature,
   viewMesh,
 } from './subdiv-core';
 import { SubdivError } from './subdiv-error';
@@ -81,8 +83,8 @@ function levelData(level: KeptLevel, buffers: RenderBuffers, ms: number): LevelD
 
 /** Each distinct ArrayBuffer under a LevelData, for the transfer list. */
 function buffersOf(level: LevelData): Transferable[] {
-  const { positions, boundingSphere, normals, triangles, edges, triangleFace } = level.buffers;
-  const arrays: ArrayBufferView[] = [positions, boundingSphere, normals, triangles, edges, triangleFace];
+  const { positions, boundingSphere, normals, triangles, edges, triangleFace, borderEdges } = level.buffers;
+  const arrays: ArrayBufferView[] = [positions, boundingSphere, normals, triangles, edges, triangleFace, borderEdges];
   arrays.push(level.controlEdges, ...tagArrays(level.tags));
   return [...new Set(arrays.map((a) => a.buffer as ArrayBuffer))];
 }
@@ -188,6 +190,11 @@ const handlers: Handlers = {
     await init();
     const inspection = inspectMesh(keptLevel(handle).mesh, options);
     return { value: inspection, transfer: inspectionBuffers(inspection) };
+  },
+  async curvature({ handle }) {
+    await init();
+    const curvature = vertexCurvature(keptLevel(handle).mesh);
+    return { value: curvature, transfer: curvatureBuffers(curvature) };
   },
   async predict({ handle, options }) {
     await init();

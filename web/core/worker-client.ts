@@ -10,6 +10,7 @@
  */
 import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
+import type { VertexCurvature } from './curvature';
 import type { Inspection, InspectOptions } from './inspect';
 import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
@@ -324,6 +325,11 @@ export class CoreSession {
   /** The symmetric Hausdorff distance between kept levels `a` and `b` (either session's), with vertex distances. */
   hausdorff(a: LevelHandle, b: LevelHandle): Promise<HausdorffDistance> {
     return this.client.request(this, 'hausdorff', { a, b });
+  }
+
+  /** The discrete curvature at each vertex of kept level `handle` (NaN on its border). */
+  curvature(handle: LevelHandle): Promise<VertexCurvature> {
+    return this.client.request(this, 'curvature', { handle });
   }
 
   /** CGAL's geometry around kept level `handle`: its measures and what `options` asks for. */

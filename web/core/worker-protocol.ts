@@ -7,6 +7,7 @@
  */
 import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
+import type { VertexCurvature } from './curvature';
 import type { Inspection, InspectOptions } from './inspect';
 import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
@@ -69,6 +70,8 @@ export interface WorkerRequests {
   hausdorff: { args: { a: LevelHandle; b: LevelHandle }; result: HausdorffDistance };
   /** CGAL's geometry around a kept level (inspect.ts): its measures and what `options` asks for. */
   inspect: { args: { handle: LevelHandle; options: InspectOptions }; result: Inspection };
+  /** The discrete curvature at each vertex of a kept level (curvature.ts). */
+  curvature: { args: { handle: LevelHandle }; result: VertexCurvature };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
   /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */

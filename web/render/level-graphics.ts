@@ -110,6 +110,8 @@ export class LevelGraphics {
    */
   readonly creases: LineSegmentsGeometry | null;
   readonly corners: BufferGeometry | null;
+  /** The border edges (of one face) as segments a few pixels wide, drawn with the polygon edges (null: closed). */
+  readonly borders: LineSegmentsGeometry | null;
   /**
    * The faces the surface draws. A closed surface hides the faces turned
    * away from the camera behind those turned towards it, so only the latter
@@ -155,6 +157,13 @@ export class LevelGraphics {
       this.curves.setAttribute('position', position);
       this.curves.setIndex(new BufferAttribute(controlEdges, 1));
       this.curves.boundingSphere = sphere.clone();
+    }
+    this.borders = null;
+    if (buffers.borderEdges.length > 0) {
+      const xyz = new Float32Array(3 * buffers.borderEdges.length);
+      for (const [i, v] of buffers.borderEdges.entries()) xyz.set(buffers.positions.subarray(3 * v, 3 * v + 3), 3 * i);
+      this.borders = new LineSegmentsGeometry().setPositions(xyz);
+      this.borders.boundingSphere = sphere.clone();
     }
     this.creases = null;
     this.corners = null;
@@ -206,5 +215,6 @@ export class LevelGraphics {
     this.curves?.dispose();
     this.creases?.dispose();
     this.corners?.dispose();
+    this.borders?.dispose();
   }
 }

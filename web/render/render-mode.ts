@@ -1,5 +1,5 @@
 /** How the surface is drawn. Overlays (control mesh, bounding box) are separate toggles. */
-export type RenderMode = 'smooth' | 'flat' | 'edges' | 'wireframe';
+export type RenderMode = 'smooth' | 'flat' | 'edges' | 'wireframe' | 'zebra' | 'mean-curvature' | 'gaussian-curvature';
 
 /** The modes in menu and `r`-cycling order, with their labels. */
 export const RENDER_MODES: readonly { mode: RenderMode; label: string }[] = [
@@ -7,6 +7,9 @@ export const RENDER_MODES: readonly { mode: RenderMode; label: string }[] = [
   { mode: 'flat', label: 'Flat shaded' },
   { mode: 'edges', label: 'Shaded with polygon edges' },
   { mode: 'wireframe', label: 'Wireframe (polygon edges)' },
+  { mode: 'zebra', label: 'Reflection lines (zebra)' },
+  { mode: 'mean-curvature', label: 'Mean curvature (colours)' },
+  { mode: 'gaussian-curvature', label: 'Gaussian curvature (colours)' },
 ];
 
 /** The mode after `mode` in cycling order. */

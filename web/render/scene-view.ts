@@ -7,18 +7,14 @@
  * only its materials and helper objects.
  */
 import {
-  AmbientLight,
   Box3,
   Box3Helper,
   BufferGeometry,
   Color,
-  DirectionalLight,
-  DoubleSide,
   Float32BufferAttribute,
   LineBasicMaterial,
   LineSegments,
   Mesh,
-  MeshLambertMaterial,
   type Object3D,
   PerspectiveCamera,
   Points,
@@ -37,6 +33,7 @@ import type { LevelGraphics } from './level-graphics';
 import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
+import { addLights, SURFACE_COLORS, SurfaceMaterials } from './surface-materials';
 import type { ViewState } from './view-state';
 
 /** Colours shared by the WebGL view and the SVG export. */
@@ -44,11 +41,13 @@ export const VIEW_COLORS = {
   background: '#f3f4f6',
   /** Behind the model when the page prefers a dark scheme (the element's default there). */
   backgroundDark: '#1f2328',
-  surface: '#8db4dc',
+  surface: SURFACE_COLORS.front,
   edges: '#1f2d3d',
   edgesOnDark: '#dce3ea',
   control: '#e8590c',
   curves: '#c2255c',
+  /** Border edges (of one face), drawn wider with the polygon edges. */
+  border: '#2f9e44',
   bbox: '#6b7280',
   /** The control edges and vertex the crease editor has selected, and the vertex the stencil inspector shows. */
   selection: '#15aabf',
@@ -69,10 +68,6 @@ const CLICK_SLOP = 4;
 
 /** Direction the camera looks from (towards the model) when fitting: shows three sides of a box. */
 const FIT_DIRECTION = new Vector3(0.55, 0.45, 1).normalize();
-/** Light position in camera space (up and to the left, so the three sides of a box differ). */
-export const LIGHT_IN_CAMERA = new Vector3(-0.45, 0.8, 0.7).normalize();
-/** Ambient and directional shares of the surface colour (Lambert / π). */
-export const LIGHT_SHARES = { ambient: 0.32, directional: 0.8 } as const;
 
 /**
  * Draws `parts` (a level's geometry, maybe in parts) with `object`: the
@@ -118,6 +113,7 @@ export class SceneView {
   private readonly controlLines: LineSegments;
   private readonly curveLines: LineSegments;
   private readonly creaseLines: LineSegments2;
+  private readonly borderLines: LineSegments2;
   private readonly cornerPoints: Points<BufferGeometry, PointsMaterial>;
   private readonly selectedLines: LineSegments2;
   private readonly selectedPoints: Points<BufferGeometry, PointsMaterial>;
@@ -130,8 +126,9 @@ export class SceneView {
   /** Level 0's graphics (the control mesh) and the shown level's, for picking. */
   private control: LevelGraphics | null = null;
   private shown: LevelGraphics | null = null;
-  private readonly smoothMaterial: MeshLambertMaterial;
-  private readonly flatMaterial: MeshLambertMaterial;
+  private readonly materials = new SurfaceMaterials();
+  /** The shown level is the control mesh: drawn with face normals (a cube looks like a cube). */
+  private controlShown = false;
   private bboxHelper: Box3Helper | null = null;
   private readonly overlays = new Map<OverlayName, boolean>(
     Object.entries(OVERLAY_DEFAULTS) as [OverlayName, boolean][],
@@ -167,23 +164,8 @@ export class SceneView {
 
     this.camera = new PerspectiveCamera(35, 1, 0.01, 100);
     this.scene.add(this.camera);
-    this.scene.add(new AmbientLight(0xffffff, LIGHT_SHARES.ambient * Math.PI));
-    const light = new DirectionalLight(0xffffff, LIGHT_SHARES.directional * Math.PI);
-    light.position.copy(LIGHT_IN_CAMERA);
-    light.target.position.set(0, 0, 0);
-    this.camera.add(light, light.target);
-
-    const surfaceMaterial = {
-      color: VIEW_COLORS.surface,
-      side: DoubleSide,
-      // Push the surface back a little so polygon edges drawn at the same depth stay visible.
-      polygonOffset: true,
-      polygonOffsetFactor: 1,
-      polygonOffsetUnits: 1,
-    };
-    this.smoothMaterial = new MeshLambertMaterial(surfaceMaterial);
-    this.flatMaterial = new MeshLambertMaterial({ ...surfaceMaterial, flatShading: true });
-    this.surface = new Mesh(undefined, this.smoothMaterial);
+    addLights(this.scene, this.camera);
+    this.surface = new Mesh(undefined, this.materials.smooth);
     this.edgeLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.edges }));
     this.controlLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.control }));
     this.controlLines.renderOrder = 1;
@@ -195,6 +177,11 @@ export class SceneView {
       new LineMaterial({ vertexColors: true, linewidth: 4 }),
     );
     this.creaseLines.renderOrder = 3;
+    this.borderLines = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({ color: VIEW_COLORS.border, linewidth: 3 }),
+    );
+    this.borderLines.renderOrder = 0.5;
     this.cornerPoints = new Points(
       new BufferGeometry(),
       new PointsMaterial({ vertexColors: true, size: 12, sizeAttenuation: false }),
@@ -238,6 +225,7 @@ export class SceneView {
       this.controlLines,
       this.curveLines,
       this.creaseLines,
+      this.borderLines,
       this.cornerPoints,
       this.selectedLines,
       this.selectedPoints,
@@ -301,27 +289,28 @@ export class SceneView {
     this.frame = requestAnimationFrame(loop);
   }
 
-  /** Shows a level (null: nothing). The caller keeps ownership of `graphics`. */
-  setLevel(graphics: LevelGraphics | null): void {
+  /**
+   * Shows a level (null: nothing); `control`: it is the control mesh, drawn
+   * with face normals whatever the mode. The caller keeps ownership of `graphics`.
+   */
+  setLevel(graphics: LevelGraphics | null, control = false): void {
     this.shown = graphics;
+    this.controlShown = control;
     if (graphics) {
       showParts(this.surface, graphics.surfaceParts);
-      for (const material of [this.smoothMaterial, this.flatMaterial]) {
-        // The side is part of the shader (three's DOUBLE_SIDED / FLIP_SIDED): recompiled when it changes.
-        if (material.side !== graphics.side) {
-          material.side = graphics.side;
-          material.needsUpdate = true;
-        }
-      }
+      this.materials.setSide(graphics.side);
       showParts(this.edgeLines, graphics.edgeParts);
       if (graphics.curves) this.curveLines.geometry = graphics.curves;
       if (graphics.creases) this.creaseLines.geometry = graphics.creases;
       if (graphics.corners) this.cornerPoints.geometry = graphics.corners;
+      if (graphics.borders) this.borderLines.geometry = graphics.borders;
     }
+    this.applyMaterial();
     this.surface.userData.hasLevel = graphics !== null;
     this.curveLines.userData.hasLevel = graphics?.curves != null;
     this.creaseLines.userData.hasLevel = graphics?.creases != null;
     this.cornerPoints.userData.hasLevel = graphics?.corners != null;
+    this.borderLines.userData.hasLevel = graphics?.borders != null;
     this.applyVisibility();
   }
 
@@ -354,10 +343,20 @@ export class SceneView {
 
   setRenderMode(mode: RenderMode): void {
     this.mode = mode;
-    // Edges go over smooth shading: flat shading of a non-planar quad would show its fan diagonal.
-    this.surface.material = mode === 'flat' ? this.flatMaterial : this.smoothMaterial;
-    for (const part of this.surface.children) (part as Mesh).material = this.surface.material;
+    this.applyMaterial();
     this.applyVisibility();
+  }
+
+  /**
+   * The surface's material for the mode and level: face normals in flat mode
+   * and for the control mesh (its polygons are the shape), vertex normals
+   * otherwise (edges go over smooth shading: flat shading of a non-planar quad
+   * would show its fan diagonal); reflection lines in zebra mode.
+   */
+  private applyMaterial(): void {
+    const flat = this.mode === 'flat' || this.controlShown;
+    this.surface.material = this.materials.forMode(this.mode === 'zebra', flat);
+    for (const part of this.surface.children) (part as Mesh).material = this.surface.material;
   }
 
   overlay(name: OverlayName): boolean {
@@ -571,12 +570,7 @@ export class SceneView {
    * in its one colour.
    */
   setVertexColors(on: boolean): void {
-    for (const material of [this.smoothMaterial, this.flatMaterial]) {
-      if (material.vertexColors === on) continue;
-      material.vertexColors = on;
-      material.color.set(on ? '#ffffff' : VIEW_COLORS.surface);
-      material.needsUpdate = true;
-    }
+    this.materials.setVertexColors(on);
     this.dirty = true;
   }
 
@@ -662,12 +656,12 @@ export class SceneView {
     this.visibilityObserver.disconnect();
     this.controls.dispose();
     this.setBoundingBox(null, null);
-    this.smoothMaterial.dispose();
-    this.flatMaterial.dispose();
+    this.materials.dispose();
     (this.edgeLines.material as LineBasicMaterial).dispose();
     (this.controlLines.material as LineBasicMaterial).dispose();
     (this.curveLines.material as LineBasicMaterial).dispose();
     this.creaseLines.material.dispose();
+    this.borderLines.material.dispose();
     (this.cornerPoints.material as PointsMaterial).dispose();
     this.setParents(new Float32Array(0), []);
     this.labels.domElement.remove();
@@ -684,6 +678,7 @@ export class SceneView {
     const hasLevel = this.surface.userData.hasLevel === true;
     this.surface.visible = hasLevel && this.mode !== 'wireframe';
     this.edgeLines.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
+    this.borderLines.visible = this.edgeLines.visible && this.borderLines.userData.hasLevel === true;
     this.controlLines.visible = this.controlLines.userData.hasLevel === true && this.overlay('control');
     this.curveLines.visible = this.curveLines.userData.hasLevel === true && this.overlay('curves');
     this.creaseLines.visible = this.creaseLines.userData.hasLevel === true && this.overlay('creases');

@@ -9,7 +9,8 @@
  * SVGRenderer draws triangles, so the projection is done here.
  */
 import { Color, type PerspectiveCamera, Vector3 } from 'three';
-import { LIGHT_IN_CAMERA, LIGHT_SHARES, VIEW_COLORS } from './scene-view';
+import { VIEW_COLORS } from './scene-view';
+import { lightShare } from './surface-materials';
 
 /** Positions (xyz) and vertex index pairs of line segments. */
 export interface LineSet {
@@ -78,7 +79,6 @@ export function exportSvg(input: SvgExportInput): string {
     screen[2 * i + 1] = ((1 - v.y) / 2) * height;
   }
 
-  const lightDir = LIGHT_IN_CAMERA.clone().applyQuaternion(camera.quaternion).normalize();
   const base = new Color(VIEW_COLORS.surface);
   const viewDir = new Vector3();
   camera.getWorldDirection(viewDir);
@@ -100,7 +100,7 @@ export function exportSvg(input: SvgExportInput): string {
     const clipped = corners.some((c) => behind[c] === 1);
     if (clipped || normal.lengthSq() === 0 || !facesCamera(camera, centroid, normal)) continue;
     normal.normalize();
-    const shade = LIGHT_SHARES.ambient + LIGHT_SHARES.directional * Math.max(0, normal.dot(lightDir));
+    const shade = lightShare(normal, camera.quaternion);
     shaded.copy(base).multiplyScalar(Math.min(shade, 1));
     const points: string[] = [];
     for (const c of corners) points.push(`${n(screen[2 * c])},${n(screen[2 * c + 1])}`);

@@ -13,6 +13,7 @@
 
 import type { BufferAttribute } from 'three';
 import type { MeshComparison } from '../core/compare';
+import type { VertexCurvature } from '../core/curvature';
 import type { Inspection, InspectOptions } from '../core/inspect';
 import type {
   BoundaryInterpolation,
@@ -44,6 +45,7 @@ import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
 import { exportSvg } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
+import { CurvatureShading } from './curvature-shading';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
 import { linearTwin, schemeInfo } from './scheme-info';
 
@@ -156,15 +158,21 @@ interface Level {
   graphics: LevelGraphics | null;
   /** Its stencils, once asked for (stencils()). */
   stencils?: Promise<StencilTable>;
+  /** Its vertices' curvature, once asked for (curvature()). */
+  curvature?: Promise<VertexCurvature>;
   /** The tools' colours of its vertices (setLevelColors). */
   colours?: { owner: ColourOwner; rgb: Float32Array }[];
 }
 
-/** Who colours a level's vertices: the basis view, a result's check, side by side's distances. */
-export type ColourOwner = 'basis' | 'check' | 'distance';
+/** Who colours a level's vertices: the basis view, a result's check, side by side's distances, a curvature render mode. */
+export type ColourOwner = 'basis' | 'check' | 'distance' | 'curvature';
 
-/** Which colours show when several tools colour a level: what the user picked last in the panels over the panes' distances. */
-const COLOUR_PRIORITY: Record<ColourOwner, number> = { basis: 2, check: 2, distance: 1 };
+/**
+ * Which colours show when several colour a level: a curvature render mode
+ * (chosen for the whole view; leaving it gives the tools' colours back),
+ * then what the user picked last in the panels, then the panes' distances.
+ */
+const COLOUR_PRIORITY: Record<ColourOwner, number> = { curvature: 3, basis: 2, check: 2, distance: 1 };
 
 export class SubdivViewer {
   readonly view: SceneView;
@@ -200,6 +208,8 @@ export class SubdivViewer {
    * click); `key` names the generation and the level it was asked from.
    */
   private ahead: { key: string; prediction: Promise<SizePrediction> } | null = null;
+  /** The curvature render modes' colours and colour bar. */
+  private readonly curvatureShading: CurvatureShading;
 
   constructor(container: HTMLElement, options: SubdivViewerOptions = {}) {
     this.core = (options.client ?? pageCore()).session();
@@ -208,6 +218,20 @@ export class SubdivViewer {
     this.confirmLargeStep = options.confirmLargeStep ?? (async () => false);
     this.view = new SceneView(container);
     if (options.renderMode) this.view.setRenderMode(options.renderMode);
+    const viewer = this;
+    this.curvatureShading = new CurvatureShading(container, {
+      get renderMode() {
+        return viewer.view.renderMode;
+      },
+      get shownLevel() {
+        return viewer.levels[viewer.current] ? { k: viewer.current, id: viewer.levelId() } : null;
+      },
+      get levelCount() {
+        return viewer.levels.length;
+      },
+      curvature: (k) => this.curvature(k),
+      setCurvatureColours: (k, rgb) => this.setLevelColors(k, rgb, 'curvature'),
+    });
     this.view.onDraw = () => {
       if (this.levels.length === 0) return;
       this.drawn = { level: this.current, at: performance.now() };
@@ -480,7 +504,29 @@ export class SubdivViewer {
 
   setRenderMode(mode: RenderMode): void {
     this.view.setRenderMode(mode);
+    void this.curvatureShading.update();
     this.emit();
+  }
+
+  /**
+   * The discrete curvature at level `k`'s vertices (default: the shown
+   * one), asked of the core once a level; null before a load.
+   */
+  async curvature(k = this.current): Promise<VertexCurvature | null> {
+    const level = this.levels[k];
+    if (!level) return null;
+    level.curvature ??= this.withHandle(k, (h) => this.core.curvature(h));
+    try {
+      return await level.curvature;
+    } catch (error) {
+      level.curvature = undefined;
+      throw error;
+    }
+  }
+
+  /** Resolves once the colours of a curvature render mode show on the shown level (at once in other modes). */
+  curvatureShown(): Promise<void> {
+    return this.curvatureShading.update();
   }
 
   setOverlay(name: OverlayName, visible: boolean): void {
@@ -754,6 +800,7 @@ export class SubdivViewer {
     this.core.release(this.levels.map((l) => l.data.handle));
     this.levels = [];
     this.source = null;
+    this.curvatureShading.dispose();
     this.view.dispose();
     this.listeners.clear();
     this.viewListeners.clear();
@@ -934,10 +981,11 @@ export class SubdivViewer {
     this.endSplitBlend();
     const level = this.levels[this.current];
     const graphics = this.graphicsOf(level);
-    this.view.setLevel(graphics);
+    this.view.setLevel(graphics, this.current === 0);
     this.view.setVertexColors(graphics.surface.hasAttribute('color'));
     this.view.setControlMesh(this.graphicsOf(this.levels[0]));
     this.view.setBoundingBox(level.data.facts.bboxMin, level.data.facts.bboxMax);
+    void this.curvatureShading.update();
     this.emit();
   }
 

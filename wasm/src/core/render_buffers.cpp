@@ -209,6 +209,37 @@ std::size_t polygon_edges(std::size_t n, const Faces& faces,
   return edges;
 }
 
+/// The edges of `edges` (smaller vertex first) that only one corner of
+/// `faces` goes along: the border. Each face's corner edges are bucketed by
+/// their smaller vertex as polygon_edges does; an edge met once in its
+/// bucket is on the border.
+void border_edges(std::size_t n, const Faces& faces,
+                  const std::vector<std::uint32_t>& edges,
+                  std::vector<std::uint32_t>& out) {
+  out.clear();
+  // A closed mesh: every edge has two corners.
+  if (faces.indices.size() == edges.size()) return;
+  std::vector<std::uint32_t> end(n + 1, 0);
+  for_each_corner_edge(faces, [&end](std::uint32_t a, std::uint32_t b) {
+    ++end[std::min(a, b) + 1];
+  });
+  for (std::size_t v = 0; v < n; ++v) end[v + 1] += end[v];
+  std::vector<std::uint32_t> larger(faces.indices.size());
+  {
+    std::vector<std::uint32_t> fill(end.begin(), end.end() - 1);
+    for_each_corner_edge(faces, [&](std::uint32_t a, std::uint32_t b) {
+      larger[fill[std::min(a, b)]++] = std::max(a, b);
+    });
+  }
+  for (std::size_t i = 0; i < edges.size(); i += 2) {
+    const std::uint32_t lo = edges[i], hi = edges[i + 1];
+    std::uint32_t corners = 0;
+    for (std::uint32_t j = end[lo]; j < end[lo + 1]; ++j)
+      corners += larger[j] == hi;
+    if (corners == 1) out.insert(out.end(), {lo, hi});
+  }
+}
+
 }  // namespace
 
 std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
@@ -268,6 +299,12 @@ std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
                 : polygon_edges(mesh.vertex_count(), faces, edges);
   }
   sink.indices(Render_array::edges, edges);
+  {
+    // Of the edges drawn, those of one face of the whole mesh.
+    std::vector<std::uint32_t> border;
+    border_edges(mesh.vertex_count(), all, edges, border);
+    sink.indices(Render_array::border_edges, border);
+  }
   return count;
 }
 
@@ -299,8 +336,10 @@ Render_buffers render_buffers(const Mesh_buffers& mesh) {
         out.triangles = v;
       else if (which == Render_array::triangle_face)
         out.triangle_face = v;
-      else
+      else if (which == Render_array::edges)
         out.edges = v;
+      else
+        out.border_edges = v;
     }
   } collect;
   build_render_buffers(mesh, collect);

@@ -29,13 +29,17 @@ namespace subdivlab {
 ///                  they give all the edges the caller expects (a closed
 ///                  mesh: one pass), otherwise ordered by the smaller
 ///                  vertex, then by first appearance
+///   border_edges   the edges of one face only (the mesh's border, hole
+///                  faces counted as faces), as edges gives them; empty on
+///                  a closed mesh
 enum class Render_array {
   positions,
   bounding_sphere,
   normals,
   triangles,
   triangle_face,
-  edges
+  edges,
+  border_edges
 };
 
 /// Receives the arrays one at a time; each is freed when the call returns,
@@ -63,7 +67,7 @@ double render_peak_bytes(double vertices, double edges, double corners,
 /// All the arrays at once (tests, and callers without a sink).
 struct Render_buffers {
   std::vector<float> positions, bounding_sphere, normals;
-  std::vector<std::uint32_t> triangles, triangle_face, edges;
+  std::vector<std::uint32_t> triangles, triangle_face, edges, border_edges;
 };
 Render_buffers render_buffers(const Mesh_buffers& mesh);
 
