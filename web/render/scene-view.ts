@@ -15,7 +15,6 @@ import {
   DirectionalLight,
   DoubleSide,
   Float32BufferAttribute,
-  LineBasicMaterial,
   LineSegments,
   Mesh,
   MeshLambertMaterial,
@@ -33,7 +32,17 @@ import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
+import { fitCamera, fitDistance, freeRect, viewOffsetPixels } from './fit';
 import type { LevelGraphics } from './level-graphics';
+import {
+  DEFAULT_LINE_WIDTH,
+  edgeOpacity,
+  fatLinesOf,
+  type LineKind,
+  lineWidthPx,
+  meanSegmentLength,
+  projectedLength,
+} from './line-style';
 import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
@@ -114,9 +123,10 @@ export class SceneView {
   private readonly scene = new Scene();
   private readonly controls: TrackballControls;
   private readonly surface: Mesh;
-  private readonly edgeLines: LineSegments;
-  private readonly controlLines: LineSegments;
-  private readonly curveLines: LineSegments;
+  /** The polygon edges, the cage and the marked curves: fat lines (WebGL's own are one pixel wide). */
+  private readonly edgeLines: LineSegments2;
+  private readonly controlLines: LineSegments2;
+  private readonly curveLines: LineSegments2;
   private readonly creaseLines: LineSegments2;
   private readonly cornerPoints: Points<BufferGeometry, PointsMaterial>;
   private readonly selectedLines: LineSegments2;
@@ -124,7 +134,13 @@ export class SceneView {
   /** The stencil inspector's parents (points) and their weights (labels over the canvas). */
   private readonly parentPoints: Points<BufferGeometry, PointsMaterial>;
   /** Thin lines from the inspected vertex to each parent. */
-  private readonly parentLines: LineSegments;
+  private readonly parentLines: LineSegments2;
+  /** Where the target is drawn (NDC), so the model clears the panels over the view: set by {@link fit}. */
+  private offset: [number, number] = [0, 0];
+  /** The line-width setting, CSS pixels (see line-style.ts). */
+  private lineWidth = DEFAULT_LINE_WIDTH;
+  /** Mean 3D length of each level's polygon edges, for the edges' fading. */
+  private readonly meanEdge = new WeakMap<LevelGraphics, number>();
   private readonly labels = new CSS2DRenderer();
   private labelObjects: CSS2DObject[] = [];
   /** Level 0's graphics (the control mesh) and the shown level's, for picking. */
@@ -184,10 +200,14 @@ export class SceneView {
     this.smoothMaterial = new MeshLambertMaterial(surfaceMaterial);
     this.flatMaterial = new MeshLambertMaterial({ ...surfaceMaterial, flatShading: true });
     this.surface = new Mesh(undefined, this.smoothMaterial);
-    this.edgeLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.edges }));
-    this.controlLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.control }));
+    // Transparent: the edges fade as they crowd (line-style.ts).
+    this.edgeLines = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({ color: VIEW_COLORS.edges, transparent: true }),
+    );
+    this.controlLines = new LineSegments2(new LineSegmentsGeometry(), new LineMaterial({ color: VIEW_COLORS.control }));
     this.controlLines.renderOrder = 1;
-    this.curveLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.curves }));
+    this.curveLines = new LineSegments2(new LineSegmentsGeometry(), new LineMaterial({ color: VIEW_COLORS.curves }));
     this.curveLines.renderOrder = 2;
     // Sharp edges and corners (their colours say how sharp): drawn over everything else.
     this.creaseLines = new LineSegments2(
@@ -225,9 +245,9 @@ export class SceneView {
       new PointsMaterial({ color: VIEW_COLORS.parents, size: 12, sizeAttenuation: false }),
     );
     this.parentPoints.renderOrder = 3.5;
-    this.parentLines = new LineSegments(
-      new BufferGeometry(),
-      new LineBasicMaterial({ color: VIEW_COLORS.parents, transparent: true, opacity: 0.7 }),
+    this.parentLines = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({ color: VIEW_COLORS.parents, transparent: true, opacity: 0.7 }),
     );
     this.parentLines.renderOrder = 3;
     this.labels.domElement.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
@@ -313,8 +333,6 @@ export class SceneView {
           material.needsUpdate = true;
         }
       }
-      showParts(this.edgeLines, graphics.edgeParts);
-      if (graphics.curves) this.curveLines.geometry = graphics.curves;
       if (graphics.creases) this.creaseLines.geometry = graphics.creases;
       if (graphics.corners) this.cornerPoints.geometry = graphics.corners;
     }
@@ -328,7 +346,6 @@ export class SceneView {
   /** The level-0 graphics whose polygon edges form the control-mesh overlay. */
   setControlMesh(graphics: LevelGraphics | null): void {
     this.control = graphics;
-    if (graphics) this.controlLines.geometry = graphics.edges;
     this.controlLines.userData.hasLevel = graphics !== null;
     this.applyVisibility();
   }
@@ -372,7 +389,7 @@ export class SceneView {
   /** Points the camera at `sphere` from the default direction, at a distance that shows all of it. */
   fitSphere(sphere: Sphere): void {
     this.radius = Math.max(sphere.radius, 1e-9);
-    const distance = this.fitDistance(this.radius);
+    const distance = fitDistance(this.radius, this.camera.fov, this.camera.aspect);
     this.controls.target.copy(sphere.center);
     this.camera.up.set(0, 1, 0);
     this.camera.position.copy(sphere.center).addScaledVector(FIT_DIRECTION, distance);
@@ -384,14 +401,110 @@ export class SceneView {
   }
 
   /**
-   * How far from its centre the camera shows a sphere of `radius` whole, by
-   * the narrower of the two fields of view: a view taller than wide (a
-   * side-by-side pane, a phone held upright) sees less across than up and down.
+   * Frames what is shown (fit.ts): the level, the cage when it is drawn and
+   * a tool's objects, inside the part of the view no panel marked
+   * `data-covers-view` covers; looking from `view` (a canonical view's
+   * direction and up) or from the default direction.
    */
-  private fitDistance(radius: number): number {
-    const vertical = ((this.camera.fov / 2) * Math.PI) / 180;
-    const horizontal = Math.atan(Math.tan(vertical) * this.camera.aspect);
-    return (radius / Math.sin(Math.min(vertical, horizontal))) * 1.2;
+  fit(view?: { direction: readonly number[]; up: readonly number[] }): void {
+    const points: ArrayLike<number>[] = [];
+    if (this.shown) points.push(this.shown.surface.getAttribute('position').array);
+    if (this.control && this.controlLines.visible) points.push(this.control.surface.getAttribute('position').array);
+    if (this.extras) {
+      const box = new Box3().setFromObject(this.extras);
+      if (!box.isEmpty()) points.push([...box.min.toArray(), ...box.max.toArray()]);
+    }
+    const direction = view ? new Vector3().fromArray(view.direction) : FIT_DIRECTION.clone();
+    const up = new Vector3().fromArray(view?.up ?? [0, 1, 0]);
+    const { width, height } = this.size;
+    const canvas = this.canvas.getBoundingClientRect();
+    const covers = [...this.container.querySelectorAll<HTMLElement>('[data-covers-view]')]
+      .filter((e) => e.getClientRects().length > 0)
+      .map((e) => e.getBoundingClientRect())
+      .map((r) => ({
+        left: r.left - canvas.left,
+        top: r.top - canvas.top,
+        right: r.right - canvas.left,
+        bottom: r.bottom - canvas.top,
+      }));
+    const fitted = fitCamera({
+      points,
+      direction,
+      up,
+      fov: this.camera.fov,
+      aspect: this.camera.aspect,
+      free: freeRect(width, height, covers),
+    });
+    if (!fitted) return;
+    this.offset = fitted.offset;
+    this.applyOffset();
+    this.radius = Math.max(fitted.radius, 1e-9);
+    this.setView({
+      position: fitted.position.toArray(),
+      target: fitted.target.toArray(),
+      up: fitted.up.toArray(),
+    });
+  }
+
+  /** Where the target is drawn, in NDC (x right, y up): Fit's shift that keeps the model clear of the panels. */
+  get viewOffset(): [number, number] {
+    return [...this.offset];
+  }
+
+  /** Shifts the projection by {@link offset} (three's view offset; none when it is zero). */
+  private applyOffset(): void {
+    const { width, height } = this.size;
+    if (this.offset[0] === 0 && this.offset[1] === 0) {
+      this.camera.clearViewOffset();
+      return;
+    }
+    const [x, y] = viewOffsetPixels(this.offset, width, height);
+    this.camera.setViewOffset(width, height, x, y, width, height);
+  }
+
+  /** Sets the line-width setting (CSS pixels; line-style.ts). */
+  setLineWidth(width: number): void {
+    this.lineWidth = width;
+    this.dirty = true;
+  }
+
+  get lineWidthSetting(): number {
+    return this.lineWidth;
+  }
+
+  /**
+   * The opacity the polygon edges are drawn with now: by their mean length on
+   * screen at the target's depth (line-style.ts, edgeOpacity).
+   */
+  edgeOpacity(): number {
+    const shown = this.shown;
+    if (!shown) return 1;
+    let mean = this.meanEdge.get(shown);
+    if (mean === undefined) {
+      mean = meanSegmentLength(shown.surface.getAttribute('position').array, shown.edges.index?.array ?? []);
+      this.meanEdge.set(shown, mean);
+    }
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    return edgeOpacity(projectedLength(mean, distance, this.camera, this.size.height), this.lineWidth);
+  }
+
+  /** Gives each fat line its width for a picture of `pixelsPerCss` device pixels a CSS pixel, and the edges their opacity. */
+  private styleLines(pixelsPerCss: number): void {
+    const widths: [LineSegments2, LineKind][] = [
+      [this.edgeLines, 'edges'],
+      [this.controlLines, 'control'],
+      [this.curveLines, 'curves'],
+      [this.creaseLines, 'creases'],
+      [this.parentLines, 'parents'],
+    ];
+    for (const [line, kind] of widths) line.material.linewidth = lineWidthPx(kind, this.lineWidth, pixelsPerCss);
+    // The selection is a marker of fixed size, only scaled with the picture.
+    this.selectedLines.material.linewidth = 12 * pixelsPerCss;
+    this.edgeLines.material.opacity = this.edgeOpacity();
+    // The fat lines of what is shown, made when first drawn (and refilled when Split moves the points).
+    if (this.edgeLines.visible && this.shown) this.edgeLines.geometry = fatLinesOf(this.shown.edges);
+    if (this.controlLines.visible && this.control) this.controlLines.geometry = fatLinesOf(this.control.edges);
+    if (this.curveLines.visible && this.shown?.curves) this.curveLines.geometry = fatLinesOf(this.shown.curves);
   }
 
   /** The current viewpoint. */
@@ -515,8 +628,7 @@ export class SceneView {
       }
     }
     this.parentLines.geometry.dispose();
-    this.parentLines.geometry = new BufferGeometry();
-    this.parentLines.geometry.setAttribute('position', new Float32BufferAttribute(spokes, 3));
+    this.parentLines.geometry = new LineSegmentsGeometry().setPositions(spokes);
     this.parentLines.visible = vertex.length === 3 && parents.length > 0;
     for (const object of this.labelObjects) {
       this.scene.remove(object);
@@ -556,7 +668,7 @@ export class SceneView {
   /** Moves the camera to show `sphere`, looking from where it looks now. */
   frameSphere(sphere: Sphere): void {
     const direction = this.camera.position.clone().sub(this.controls.target).normalize();
-    const distance = this.fitDistance(Math.max(sphere.radius, 1e-9));
+    const distance = fitDistance(Math.max(sphere.radius, 1e-9), this.camera.fov, this.camera.aspect);
     this.controls.target.copy(sphere.center);
     this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
     this.camera.lookAt(sphere.center);
@@ -582,8 +694,7 @@ export class SceneView {
 
   /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */
   edgeSegments(): number {
-    const parts = [this.edgeLines, ...this.edgeLines.children.filter((c) => c.visible)] as LineSegments[];
-    return parts.reduce((sum, part) => sum + (part.geometry.index?.count ?? 0), 0) / 2;
+    return (this.shown?.edges.index?.count ?? 0) / 2;
   }
 
   /** Geometries and textures alive on the GPU for the whole page (three's renderer.info), for leak checks. */
@@ -599,7 +710,7 @@ export class SceneView {
     this.background = color;
     // Polygon edges stay visible on a dark background.
     const dark = color === null ? darkBehind : new Color(color).getHSL({ h: 0, s: 0, l: 0 }).l < 0.35;
-    (this.edgeLines.material as LineBasicMaterial).color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
+    this.edgeLines.material.color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
     this.dirty = true;
   }
 
@@ -611,6 +722,7 @@ export class SceneView {
   /** Draws now. */
   render(): void {
     this.dirty = false;
+    this.styleLines(this.canvas.width / this.size.width);
     this.renderer.draw(this.scene, this.camera, this.context, this.canvas.width, this.canvas.height, this.background);
     if (this.labelObjects.length > 0) this.labels.render(this.scene, this.camera);
     this.onDraw?.();
@@ -618,9 +730,14 @@ export class SceneView {
 
   /** The geometries the next draw needs on the GPU. */
   private shownGeometries(): BufferGeometry[] {
-    const objects = [this.surface, this.edgeLines, this.controlLines, this.curveLines].filter((o) => o.visible);
-    const parts = objects.flatMap((o) => [o, ...o.children.filter((c) => c.visible)]) as (Mesh | LineSegments)[];
-    return parts.map((o) => o.geometry);
+    const parts = [this.surface, ...this.surface.children.filter((c) => c.visible)] as Mesh[];
+    const surface = this.surface.visible ? parts.map((o) => o.geometry) : [];
+    const lines = [
+      this.edgeLines.visible && this.shown ? fatLinesOf(this.shown.edges) : null,
+      this.controlLines.visible && this.control ? fatLinesOf(this.control.edges) : null,
+      this.curveLines.visible && this.shown?.curves ? fatLinesOf(this.shown.curves) : null,
+    ];
+    return [...surface, ...lines.filter((g) => g !== null)];
   }
 
   /** Size of the view in CSS pixels. */
@@ -647,7 +764,10 @@ export class SceneView {
     canvas.height = h;
     const context = canvas.getContext('2d');
     if (!context) return Promise.reject(new Error('This browser cannot draw on a canvas.'));
+    // Lines as wide, relative to the picture, as on screen: ×4 pixels, ×4 line widths.
+    this.styleLines(w / width);
     this.renderer.draw(this.scene, this.camera, context, w, h, transparent ? null : this.background);
+    this.styleLines(this.canvas.width / width);
     if (w > this.canvas.width || h > this.canvas.height) this.renderer.shrink();
     return new Promise<Blob>((resolve, reject) =>
       canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('The browser could not encode the PNG.'))), 'image/png'),
@@ -664,9 +784,9 @@ export class SceneView {
     this.setBoundingBox(null, null);
     this.smoothMaterial.dispose();
     this.flatMaterial.dispose();
-    (this.edgeLines.material as LineBasicMaterial).dispose();
-    (this.controlLines.material as LineBasicMaterial).dispose();
-    (this.curveLines.material as LineBasicMaterial).dispose();
+    this.edgeLines.material.dispose();
+    this.controlLines.material.dispose();
+    this.curveLines.material.dispose();
     this.creaseLines.material.dispose();
     (this.cornerPoints.material as PointsMaterial).dispose();
     this.setParents(new Float32Array(0), []);
@@ -676,7 +796,7 @@ export class SceneView {
       object.material.dispose();
     }
     this.parentLines.geometry.dispose();
-    (this.parentLines.material as LineBasicMaterial).dispose();
+    this.parentLines.material.dispose();
     this.canvas.remove();
   }
 
@@ -698,6 +818,7 @@ export class SceneView {
     this.canvas.width = Math.round(width * ratio);
     this.canvas.height = Math.round(height * ratio);
     this.camera.aspect = width / height;
+    this.applyOffset();
     this.camera.updateProjectionMatrix();
     this.labels.setSize(width, height);
     this.controls.handleResize();
