@@ -309,3 +309,18 @@ test('Cancel of a long step says which level was not computed and which is shown
     await expect(app.byTestId('notice')).toBeHidden();
   });
 });
+
+test('a large level in wireframe: its fat lines go to the GPU over several frames and are drawn', async ({ app }) => {
+  test.setTimeout(120_000);
+  await app.open();
+  // 90 000 quads: level 1 has 720 000 edges, 17 MB of fat-line ends (over the 8 MB a frame uploads).
+  await app.load('grid-300.off', quadGridOff(300));
+  await app.subdivide();
+  await app.byTestId('controls.render-mode').selectOption('wireframe');
+  const png = readPng(await app.canvasPixels());
+  let dark = 0;
+  for (let y = 0; y < png.height; y += 2) for (let x = 0; x < png.width; x += 2) if (darkness(png, x, y) > 0.1) dark++;
+  // The grid fills much of the view with edges (faded, but there).
+  expect(dark).toBeGreaterThan((png.width * png.height) / 4 / 10);
+  expect((await app.state()).edgeOpacity).toBeLessThan(0.5);
+});
