@@ -31,7 +31,7 @@ export class ViewControls {
     this.saved = el(
       'select',
       { testId: 'view.saved', attrs: { 'aria-label': 'Saved views' } },
-      el('option', { text: 'No saved views', attrs: { value: '' } }),
+      el('option', { text: 'None saved', attrs: { value: '' } }),
     );
     this.restore = button(
       'Restore',
@@ -76,7 +76,7 @@ export class ViewControls {
     if (current.length !== names.length || current.some((n, i) => n !== names[i])) {
       const options = names.map((name) => el('option', { text: name, attrs: { value: name } }));
       this.saved.replaceChildren(
-        ...(options.length > 0 ? options : [el('option', { text: 'No saved views', attrs: { value: '' } })]),
+        ...(options.length > 0 ? options : [el('option', { text: 'None saved', attrs: { value: '' } })]),
       );
     }
     if (selected !== null) this.saved.value = selected;
