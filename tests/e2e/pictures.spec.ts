@@ -324,3 +324,30 @@ test('a large level in wireframe: its fat lines go to the GPU over several frame
   expect(dark).toBeGreaterThan((png.width * png.height) / 4 / 10);
   expect((await app.state()).edgeOpacity).toBeLessThan(0.5);
 });
+
+test('the iframe route takes lines=3 (the element’s line-width): lines three times as wide', async ({ app }) => {
+  const widthAt = async (query: string) => {
+    await app.page.goto(`./embed.html?src=meshes/cube.off&mode=wireframe&controls=none&view=0,0,6,0,0,0,0,1,0${query}`);
+    const canvas = app.page.locator('canvas.subdiv-canvas');
+    // Drawn once the cube is in: its vertical edges cross the middle rows.
+    await expect
+      .poll(
+        async () => {
+          const png = readPng(await canvas.screenshot());
+          return lineWidthsOnRow(png, Math.round(png.height / 2)).length;
+        },
+        { timeout: 20_000 },
+      )
+      .toBeGreaterThanOrEqual(4);
+    return measuredLineWidth(readPng(await canvas.screenshot()));
+  };
+  const one = await widthAt('');
+  const three = await widthAt('&lines=3');
+  expect(one).toBeGreaterThan(0.6);
+  expect(one).toBeLessThan(1.5);
+  expect(three / one).toBeGreaterThan(2.5);
+  expect(three / one).toBeLessThan(3.5);
+  expect(
+    await app.page.locator('subdiv-viewer').evaluate((e) => (e as unknown as { lineWidth: number }).lineWidth),
+  ).toBe(3);
+});
