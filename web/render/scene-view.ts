@@ -22,7 +22,6 @@ import {
   PerspectiveCamera,
   Points,
   PointsMaterial,
-  Quaternion,
   Scene,
   Sphere,
   Vector3,
@@ -32,20 +31,13 @@ import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
+import { orbitCamera, panCamera, zoomCamera } from './camera-moves';
 import { fitCamera, fitDistance, freeRect, viewOffsetPixels } from './fit';
 import type { LevelGraphics } from './level-graphics';
-import {
-  DEFAULT_LINE_WIDTH,
-  edgeOpacity,
-  fatLinesOf,
-  type LineKind,
-  lineWidthPx,
-  meanSegmentLength,
-  projectedLength,
-} from './line-style';
 import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
+import { ViewLines } from './view-lines';
 import type { ViewState } from './view-state';
 
 /** Colours shared by the WebGL view and the SVG export. */
@@ -124,9 +116,7 @@ export class SceneView {
   private readonly controls: TrackballControls;
   private readonly surface: Mesh;
   /** The polygon edges, the cage and the marked curves: fat lines (WebGL's own are one pixel wide). */
-  private readonly edgeLines: LineSegments2;
-  private readonly controlLines: LineSegments2;
-  private readonly curveLines: LineSegments2;
+  private readonly lines = new ViewLines(VIEW_COLORS);
   private readonly creaseLines: LineSegments2;
   private readonly cornerPoints: Points<BufferGeometry, PointsMaterial>;
   private readonly selectedLines: LineSegments2;
@@ -137,10 +127,6 @@ export class SceneView {
   private readonly parentLines: LineSegments2;
   /** Where the target is drawn (NDC), so the model clears the panels over the view: set by {@link fit}. */
   private offset: [number, number] = [0, 0];
-  /** The line-width setting, CSS pixels (see line-style.ts). */
-  private lineWidth = DEFAULT_LINE_WIDTH;
-  /** Mean 3D length of each level's polygon edges, for the edges' fading. */
-  private readonly meanEdge = new WeakMap<LevelGraphics, number>();
   private readonly labels = new CSS2DRenderer();
   private labelObjects: CSS2DObject[] = [];
   /** Level 0's graphics (the control mesh) and the shown level's, for picking. */
@@ -200,15 +186,6 @@ export class SceneView {
     this.smoothMaterial = new MeshLambertMaterial(surfaceMaterial);
     this.flatMaterial = new MeshLambertMaterial({ ...surfaceMaterial, flatShading: true });
     this.surface = new Mesh(undefined, this.smoothMaterial);
-    // Transparent: the edges fade as they crowd (line-style.ts).
-    this.edgeLines = new LineSegments2(
-      new LineSegmentsGeometry(),
-      new LineMaterial({ color: VIEW_COLORS.edges, transparent: true }),
-    );
-    this.controlLines = new LineSegments2(new LineSegmentsGeometry(), new LineMaterial({ color: VIEW_COLORS.control }));
-    this.controlLines.renderOrder = 1;
-    this.curveLines = new LineSegments2(new LineSegmentsGeometry(), new LineMaterial({ color: VIEW_COLORS.curves }));
-    this.curveLines.renderOrder = 2;
     // Sharp edges and corners (their colours say how sharp): drawn over everything else.
     this.creaseLines = new LineSegments2(
       new LineSegmentsGeometry(),
@@ -254,9 +231,9 @@ export class SceneView {
     container.append(this.labels.domElement);
     for (const object of [
       this.surface,
-      this.edgeLines,
-      this.controlLines,
-      this.curveLines,
+      this.lines.edges,
+      this.lines.control,
+      this.lines.curves,
       this.creaseLines,
       this.cornerPoints,
       this.selectedLines,
@@ -337,7 +314,7 @@ export class SceneView {
       if (graphics.corners) this.cornerPoints.geometry = graphics.corners;
     }
     this.surface.userData.hasLevel = graphics !== null;
-    this.curveLines.userData.hasLevel = graphics?.curves != null;
+    this.lines.curves.userData.hasLevel = graphics?.curves != null;
     this.creaseLines.userData.hasLevel = graphics?.creases != null;
     this.cornerPoints.userData.hasLevel = graphics?.corners != null;
     this.applyVisibility();
@@ -346,7 +323,7 @@ export class SceneView {
   /** The level-0 graphics whose polygon edges form the control-mesh overlay. */
   setControlMesh(graphics: LevelGraphics | null): void {
     this.control = graphics;
-    this.controlLines.userData.hasLevel = graphics !== null;
+    this.lines.control.userData.hasLevel = graphics !== null;
     this.applyVisibility();
   }
 
@@ -409,7 +386,7 @@ export class SceneView {
   fit(view?: { direction: readonly number[]; up: readonly number[] }): void {
     const points: ArrayLike<number>[] = [];
     if (this.shown) points.push(this.shown.surface.getAttribute('position').array);
-    if (this.control && this.controlLines.visible) points.push(this.control.surface.getAttribute('position').array);
+    if (this.control && this.lines.control.visible) points.push(this.control.surface.getAttribute('position').array);
     if (this.extras) {
       const box = new Box3().setFromObject(this.extras);
       if (!box.isEmpty()) points.push([...box.min.toArray(), ...box.max.toArray()]);
@@ -464,47 +441,28 @@ export class SceneView {
 
   /** Sets the line-width setting (CSS pixels; line-style.ts). */
   setLineWidth(width: number): void {
-    this.lineWidth = width;
+    this.lines.width = width;
     this.dirty = true;
   }
 
   get lineWidthSetting(): number {
-    return this.lineWidth;
+    return this.lines.width;
   }
 
-  /**
-   * The opacity the polygon edges are drawn with now: by their mean length on
-   * screen at the target's depth (line-style.ts, edgeOpacity).
-   */
+  /** The opacity the polygon edges are drawn with now (line-style.ts, edgeOpacity). */
   edgeOpacity(): number {
-    const shown = this.shown;
-    if (!shown) return 1;
-    let mean = this.meanEdge.get(shown);
-    if (mean === undefined) {
-      mean = meanSegmentLength(shown.surface.getAttribute('position').array, shown.edges.index?.array ?? []);
-      this.meanEdge.set(shown, mean);
-    }
     const distance = this.camera.position.distanceTo(this.controls.target);
-    return edgeOpacity(projectedLength(mean, distance, this.camera, this.size.height), this.lineWidth);
+    return this.shown ? this.lines.edgeOpacity(this.shown, this.camera, distance, this.size.height) : 1;
   }
 
   /** Gives each fat line its width for a picture of `pixelsPerCss` device pixels a CSS pixel, and the edges their opacity. */
   private styleLines(pixelsPerCss: number): void {
-    const widths: [LineSegments2, LineKind][] = [
-      [this.edgeLines, 'edges'],
-      [this.controlLines, 'control'],
-      [this.curveLines, 'curves'],
+    this.lines.style(pixelsPerCss, this.shown, this.control, this.edgeOpacity(), [
       [this.creaseLines, 'creases'],
       [this.parentLines, 'parents'],
-    ];
-    for (const [line, kind] of widths) line.material.linewidth = lineWidthPx(kind, this.lineWidth, pixelsPerCss);
+    ]);
     // The selection is a marker of fixed size, only scaled with the picture.
     this.selectedLines.material.linewidth = 12 * pixelsPerCss;
-    this.edgeLines.material.opacity = this.edgeOpacity();
-    // The fat lines of what is shown, made when first drawn (and refilled when Split moves the points).
-    if (this.edgeLines.visible && this.shown) this.edgeLines.geometry = fatLinesOf(this.shown.edges);
-    if (this.controlLines.visible && this.control) this.controlLines.geometry = fatLinesOf(this.control.edges);
-    if (this.curveLines.visible && this.shown?.curves) this.curveLines.geometry = fatLinesOf(this.shown.curves);
   }
 
   /** The current viewpoint. */
@@ -526,39 +484,21 @@ export class SceneView {
     this.onViewChange?.();
   }
 
-  /**
-   * Keyboard camera moves (the trackball only follows the pointer): turns the
-   * camera about the target by `yawDeg` around its up axis and `pitchDeg`
-   * around its right axis.
-   */
+  /** Keyboard camera moves (camera-moves.ts): turns about the target, around the camera's up and right axes. */
   orbit(yawDeg: number, pitchDeg: number): void {
-    const eye = new Vector3().subVectors(this.camera.position, this.controls.target);
-    const right = new Vector3().crossVectors(this.camera.up, eye).normalize();
-    const yaw = new Quaternion().setFromAxisAngle(this.camera.up, (yawDeg * Math.PI) / 180);
-    const pitch = new Quaternion().setFromAxisAngle(right, (pitchDeg * Math.PI) / 180);
-    const turn = yaw.multiply(pitch);
-    eye.applyQuaternion(turn);
-    this.camera.up.applyQuaternion(turn);
-    this.camera.position.copy(this.controls.target).add(eye);
+    orbitCamera(this.camera, this.controls.target, yawDeg, pitchDeg);
     this.afterKeyboardMove();
   }
 
   /** Moves the camera towards the target (factor < 1) or away from it (factor > 1). */
   zoom(factor: number): void {
-    const eye = new Vector3().subVectors(this.camera.position, this.controls.target).multiplyScalar(factor);
-    this.camera.position.copy(this.controls.target).add(eye);
+    zoomCamera(this.camera, this.controls.target, factor);
     this.afterKeyboardMove();
   }
 
   /** Slides camera and target sideways by fractions of the view's height. */
   pan(dx: number, dy: number): void {
-    const distance = this.camera.position.distanceTo(this.controls.target);
-    const height = 2 * distance * Math.tan(((this.camera.fov / 2) * Math.PI) / 180);
-    const eye = new Vector3().subVectors(this.camera.position, this.controls.target);
-    const right = new Vector3().crossVectors(this.camera.up, eye).normalize();
-    const shift = right.multiplyScalar(dx * height).addScaledVector(this.camera.up, dy * height);
-    this.camera.position.add(shift);
-    this.controls.target.add(shift);
+    panCamera(this.camera, this.controls.target, dx, dy);
     this.afterKeyboardMove();
   }
 
@@ -710,7 +650,7 @@ export class SceneView {
     this.background = color;
     // Polygon edges stay visible on a dark background.
     const dark = color === null ? darkBehind : new Color(color).getHSL({ h: 0, s: 0, l: 0 }).l < 0.35;
-    this.edgeLines.material.color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
+    this.lines.edges.material.color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
     this.dirty = true;
   }
 
@@ -732,12 +672,7 @@ export class SceneView {
   private shownGeometries(): BufferGeometry[] {
     const parts = [this.surface, ...this.surface.children.filter((c) => c.visible)] as Mesh[];
     const surface = this.surface.visible ? parts.map((o) => o.geometry) : [];
-    const lines = [
-      this.edgeLines.visible && this.shown ? fatLinesOf(this.shown.edges) : null,
-      this.controlLines.visible && this.control ? fatLinesOf(this.control.edges) : null,
-      this.curveLines.visible && this.shown?.curves ? fatLinesOf(this.shown.curves) : null,
-    ];
-    return [...surface, ...lines.filter((g) => g !== null)];
+    return [...surface, ...this.lines.geometries(this.shown, this.control)];
   }
 
   /** Size of the view in CSS pixels. */
@@ -784,9 +719,7 @@ export class SceneView {
     this.setBoundingBox(null, null);
     this.smoothMaterial.dispose();
     this.flatMaterial.dispose();
-    this.edgeLines.material.dispose();
-    this.controlLines.material.dispose();
-    this.curveLines.material.dispose();
+    this.lines.dispose();
     this.creaseLines.material.dispose();
     (this.cornerPoints.material as PointsMaterial).dispose();
     this.setParents(new Float32Array(0), []);
@@ -803,9 +736,9 @@ export class SceneView {
   private applyVisibility(): void {
     const hasLevel = this.surface.userData.hasLevel === true;
     this.surface.visible = hasLevel && this.mode !== 'wireframe';
-    this.edgeLines.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
-    this.controlLines.visible = this.controlLines.userData.hasLevel === true && this.overlay('control');
-    this.curveLines.visible = this.curveLines.userData.hasLevel === true && this.overlay('curves');
+    this.lines.edges.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
+    this.lines.control.visible = this.lines.control.userData.hasLevel === true && this.overlay('control');
+    this.lines.curves.visible = this.lines.curves.userData.hasLevel === true && this.overlay('curves');
     this.creaseLines.visible = this.creaseLines.userData.hasLevel === true && this.overlay('creases');
     this.cornerPoints.visible = this.cornerPoints.userData.hasLevel === true && this.overlay('creases');
     if (this.bboxHelper) this.bboxHelper.visible = this.overlay('bbox');
