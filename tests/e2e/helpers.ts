@@ -206,6 +206,8 @@ export interface Camera {
   fov: number;
   width: number;
   height: number;
+  /** Where the target is drawn, in NDC (the view's shift that keeps the model clear of its panels); default 0 0. */
+  offset?: readonly [number, number];
 }
 
 const sub3 = (a: readonly number[], b: readonly number[]) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
@@ -231,6 +233,7 @@ export function projectedFacingFaces(mesh: OffMesh, camera: Camera): { x: number
   const up = cross3(right, forward);
   const t = Math.tan((camera.fov * Math.PI) / 360);
   const aspect = camera.width / camera.height;
+  const [ox, oy] = camera.offset ?? [0, 0];
   const out: { x: number; y: number; depth: number }[] = [];
   for (const f of mesh.faces) {
     const single: OffMesh = { positions: mesh.positions, faces: [f] };
@@ -242,8 +245,8 @@ export function projectedFacingFaces(mesh: OffMesh, camera: Camera): { x: number
     for (const i of f) {
       const v = sub3(mesh.positions[i], camera.position);
       const z = dot3(v, forward);
-      x += ((dot3(v, right) / (z * t * aspect) + 1) / 2) * camera.width;
-      y += ((1 - dot3(v, up) / (z * t)) / 2) * camera.height;
+      x += ((dot3(v, right) / (z * t * aspect) + ox + 1) / 2) * camera.width;
+      y += ((1 - dot3(v, up) / (z * t) - oy) / 2) * camera.height;
     }
     out.push({ x: x / f.length, y: y / f.length, depth: dot3(sub3(c, camera.position), forward) });
   }

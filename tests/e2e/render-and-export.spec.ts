@@ -203,7 +203,13 @@ test('SVG export: one polygon per camera-facing face, back to front, viewBox set
     // Back to front: match each polygon to its face by screen centroid, then depths must not increase.
     const state = await app.state();
     const size = await app.byTestId('viewer').evaluate((e) => [e.clientWidth, e.clientHeight]);
-    const faces = projectedFacingFaces(off, { ...state.view, fov: state.fov, width: size[0], height: size[1] });
+    const faces = projectedFacingFaces(off, {
+      ...state.view,
+      fov: state.fov,
+      width: size[0],
+      height: size[1],
+      offset: state.viewOffset,
+    });
     expect(faces.length).toBe(expected);
     const depths = svg.centroids.map(([x, y]) => {
       const nearest = faces.reduce((best, f) =>

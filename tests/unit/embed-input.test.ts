@@ -28,8 +28,18 @@ describe('element attributes', () => {
       split: 1,
       beside: [],
       distance: true,
+      lineWidth: 1,
       problems: [],
     });
+  });
+
+  it('read line-width, and name a bad one', () => {
+    expect(readEmbedState(attrs({ 'line-width': '2.5' })).lineWidth).toBe(2.5);
+    const bad = readEmbedState(attrs({ 'line-width': '20' }));
+    expect(bad.lineWidth).toBe(1);
+    expect(bad.problems).toEqual([
+      { attribute: 'line-width', message: 'line-width must be a width from 0.25 to 8 pixels, not "20".' },
+    ]);
   });
 
   it('read every attribute; a bare boolean attribute is on', () => {

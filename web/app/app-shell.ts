@@ -9,6 +9,7 @@ import type { SchemeName } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
+import { projectPoints } from '../render/fit';
 import { nextRenderMode } from '../render/render-mode';
 import { ConfirmDialog } from '../ui/confirm-dialog';
 import { DisplayPanel, overlayAvailable } from '../ui/display-panel';
@@ -40,12 +41,13 @@ import {
   type ViewerState,
 } from '../viewer/subdiv-viewer';
 import { AppTools } from './app-tools';
+import { cancelMessage } from './cancel-message';
 import { ExportActions } from './export-actions';
 import { SAMPLES } from './samples';
-import { savedView, saveView } from './saved-view';
 import { type ModelSource, ShareActions } from './share-actions';
 import type { SubdivLabTestApi, TestError } from './test-api';
 import { FIRST_VISIT, UrlState } from './url-state';
+import { ViewActions } from './view-actions';
 
 export class AppShell {
   readonly viewer: SubdivViewer;
@@ -61,6 +63,9 @@ export class AppShell {
   private readonly rules: RulesPanel;
   private readonly levels: LevelPanel;
   private readonly display: DisplayPanel;
+  private readonly views: ViewActions;
+  /** The notice says what a Cancel did: hidden when the next step or load starts. */
+  private cancelNotice = false;
   private readonly tools: AppTools;
   private readonly facts = new FactsPanel();
   private readonly exports: ExportPanel;
@@ -122,6 +127,7 @@ export class AppShell {
       this.viewer,
       (source, error) => this.showError(source, error),
       () => this.tools.sideBySide.viewers(),
+      (text) => this.notice.show(text),
     );
     stage.append(this.emptyHint, this.firstVisitHint, this.facts.element, this.progress.element);
 
@@ -155,19 +161,14 @@ export class AppShell {
       reachLevel: (level) => this.reachLevel(level),
       confirmLargeStep: (info, scheme) => this.confirmLargeStep(info, scheme),
     });
-    this.display = new DisplayPanel({
-      onRenderMode: (m) => this.viewer.setRenderMode(m),
-      onOverlay: (name, on) => this.viewer.setOverlay(name, on),
-      onFit: () => this.viewer.fitView(),
-      onSaveView: () => {
-        saveView(this.viewer.getView());
-        this.update(this.viewer.state);
+    this.views = new ViewActions(this.viewer);
+    this.display = new DisplayPanel(
+      {
+        onRenderMode: (m) => this.viewer.setRenderMode(m),
+        onOverlay: (name, on) => this.viewer.setOverlay(name, on),
       },
-      onRestoreView: () => {
-        const view = savedView();
-        if (view) this.viewer.setView(view);
-      },
-    });
+      this.views.controls.element,
+    );
     this.exports = new ExportPanel({
       onPng: (scale, transparent) => void this.exportActions.png(scale, transparent),
       onCopy: (transparent) => void this.exportActions.copyImage(transparent),
@@ -262,7 +263,8 @@ export class AppShell {
           const on = !state.overlays[name];
           if (!on || overlayAvailable(name, state)) this.viewer.setOverlay(name, on);
         },
-        fit: () => this.viewer.fitView(),
+        fit: () => this.views.fit(),
+        nextView: () => this.views.nextCanonical(),
         stepLevel: (delta) => this.viewer.setLevel(this.viewer.state.level + delta),
         open: () => this.fileInput.click(),
         cancel: () => this.cancel(),
@@ -316,6 +318,11 @@ export class AppShell {
           aspect: this.viewer.view.camera.aspect,
           gpuGeometries: this.viewer.view.gpuMemory().geometries,
           edgeSegments: this.viewer.view.edgeSegments(),
+          lineWidth: s.lineWidth,
+          edgeOpacity: this.viewer.view.edgeOpacity(),
+          savedViews: this.views.names,
+          canvas: this.viewer.view.size,
+          viewOffset: this.viewer.view.viewOffset,
           customRules: this.customRules,
           smoothBoundary: !this.fixedBoundary,
           modelSource: this.source ? { ...this.source } : null,
@@ -330,6 +337,10 @@ export class AppShell {
       positions: async () => Array.from((await this.viewer.meshOf())?.positions ?? []),
       drawnPositions: () => Array.from(this.viewer.buffersOf(this.viewer.state.level)?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
+      projected: (level) => {
+        const { camera, size } = this.viewer.view;
+        return projectPoints(this.viewer.buffersOf(level)?.positions ?? [], camera, size.width, size.height);
+      },
       vertexOnScreen: (v, shown) => {
         const at = this.viewer.view.vertexOnScreen(v, shown);
         if (!at) return null;
@@ -429,8 +440,12 @@ export class AppShell {
 
   /** Cancel or Esc: the running step or tool request stops, in every pane. */
   private cancel(): void {
+    const { busy, levelCount, level } = this.viewer.state;
     this.viewer.cancel();
     this.tools.sideBySide.cancel();
+    const said = cancelMessage(busy, levelCount > 0 ? level : null);
+    if (said) this.notice.show(said);
+    this.cancelNotice = said !== null;
   }
 
   /** Shows an error about the shown model (a teaching tool's or an edit's request that failed). */
@@ -579,7 +594,12 @@ export class AppShell {
     });
     this.rules.element.hidden = (this.pendingScheme ?? state.scheme) !== 'custom';
     this.levels.update(state);
-    this.display.update(state, savedView() !== null);
+    if (this.cancelNotice && state.busy) {
+      this.cancelNotice = false;
+      this.notice.hide();
+    }
+    this.display.update(state);
+    this.views.update();
     this.facts.update(state);
     this.exports.update(state);
     this.progress.update(state.busy);

@@ -10,12 +10,34 @@ import { exportFileName } from '../viewer/file-names';
 import { schemeInfo } from '../viewer/scheme-info';
 import type { SubdivViewer } from '../viewer/subdiv-viewer';
 
+const COPY_UNSUPPORTED =
+  'This browser cannot put images on the clipboard; use Export → PNG to save the picture instead.';
+
+/** Width and height from a PNG's header (its IHDR chunk, bytes 16–23). */
+export async function pngSize(png: Blob): Promise<{ width: number; height: number }> {
+  const header = new DataView(await png.slice(0, 24).arrayBuffer());
+  return { width: header.getUint32(16), height: header.getUint32(20) };
+}
+
+/** Why a copy failed, as the user can act on it. */
+function copyError(error: unknown): Error {
+  const name = error instanceof DOMException ? error.name : '';
+  if (name === 'NotAllowedError' || name === 'SecurityError') {
+    return new Error(
+      'The image was not copied: the browser did not allow this page to write to the clipboard (permission denied, or the page was not focused).',
+    );
+  }
+  if (name === 'NotSupportedError' || error instanceof ReferenceError) return new Error(COPY_UNSUPPORTED);
+  return error instanceof Error ? error : new Error(String(error));
+}
+
 export class ExportActions {
   /** `panes`: the viewers side by side (the first is `viewer`); one viewer when side by side is off. */
   constructor(
     private readonly viewer: SubdivViewer,
     private readonly showError: (source: string, error: unknown) => void,
     private readonly panes: () => SubdivViewer[] = () => [viewer],
+    private readonly notify: (text: string) => void = () => {},
   ) {}
 
   async png(scale: number, transparent: boolean): Promise<void> {
@@ -39,14 +61,21 @@ export class ExportActions {
     return pictureGrid(pictures, scale, transparent);
   }
 
+  /** Copies the view as a PNG and says so ("Copied a 1280×800 PNG to the clipboard"), or says why it could not. */
   async copyImage(transparent: boolean): Promise<void> {
     if (this.viewer.state.levelCount === 0) return;
+    if (typeof ClipboardItem === 'undefined' || !navigator.clipboard?.write) {
+      this.showError('Clipboard', new Error(COPY_UNSUPPORTED));
+      return;
+    }
     try {
       // Hand the promise to ClipboardItem at once: Safari needs the user gesture to be current.
       const png = this.picture(1, transparent);
       await navigator.clipboard.write([new ClipboardItem({ 'image/png': png })]);
+      const { width, height } = await pngSize(await png);
+      this.notify(`Copied a ${width}×${height} PNG to the clipboard.`);
     } catch (error) {
-      this.showError('Clipboard', error);
+      this.showError('Clipboard', copyError(error));
     }
   }
 

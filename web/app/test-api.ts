@@ -46,6 +46,15 @@ export interface SubdivLabTestState {
   modelSource: ModelSource | null;
   /** The non-blocking notice shown (e.g. ignored link values), null when hidden. */
   notice: string | null;
+  /** The line-width setting (CSS pixels) and the opacity the polygon edges are drawn with now (render/line-style.ts). */
+  lineWidth: number;
+  edgeOpacity: number;
+  /** Names of the saved views, oldest first. */
+  savedViews: string[];
+  /** Where the camera's target is drawn, in NDC (x right, y up): Fit shifts it to clear the panels over the view. */
+  viewOffset: [number, number];
+  /** Size of the view's canvas in CSS pixels. */
+  canvas: { width: number; height: number };
   /** The level the view last drew and performance.now() when that picture was in its canvas (null before a model). */
   drawn: DrawnLevel | null;
 }
@@ -95,6 +104,11 @@ export interface SubdivLabTestApi {
   vertexOnScreen(v: number, shown?: boolean): { x: number; y: number } | null;
   /** The side-by-side panes, their levels and the distance measured. */
   sideBySide(): SideBySideTestState;
+  /**
+   * Every vertex of computed level `level` (0: the control mesh) projected through the camera, in CSS
+   * pixels from the canvas's top left, not clipped (a point off the canvas has x or y outside it).
+   */
+  projected(level: number): { x: number; y: number }[];
 }
 
 declare global {

@@ -9,6 +9,7 @@
  * stepped one at a time (computed ones are reused), then the camera is set.
  */
 import type { SchemeName } from '../core/mesh';
+import { DEFAULT_LINE_WIDTH } from '../render/line-style';
 import { OVERLAY_DEFAULTS, OVERLAY_NAMES, type RenderMode } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
 import { overlayAvailable } from '../ui/display-panel';
@@ -67,6 +68,7 @@ export function paramsOfState(state: ViewerState, src: string | null, view: View
     if (on !== OVERLAY_DEFAULTS[name]) params.overlays = { ...params.overlays, [name]: on };
   }
   if (state.levelCount > 0) params.view = view;
+  if (state.lineWidth !== DEFAULT_LINE_WIDTH) params.lineWidth = state.lineWidth;
   return params;
 }
 
@@ -201,6 +203,7 @@ export class UrlState {
       if (haveModel) await this.stepTo(params.levels ?? 0, stale);
       if (stale()) return;
       viewer.setRenderMode(params.renderMode ?? DEFAULT_RENDER_MODE);
+      viewer.setLineWidth(params.lineWidth ?? DEFAULT_LINE_WIDTH);
       for (const name of OVERLAY_NAMES) {
         const on = params.overlays?.[name] ?? OVERLAY_DEFAULTS[name];
         // As the checkbox: an overlay that cannot be drawn here is not switched on, but one on by

@@ -4,6 +4,7 @@
  * is named in `problems`.
  */
 import type { SchemeName } from '../core/mesh';
+import { DEFAULT_LINE_WIDTH, MAX_LINE_WIDTH, MIN_LINE_WIDTH, parseLineWidth } from '../render/line-style';
 import { OVERLAY_DEFAULTS, type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
@@ -40,6 +41,8 @@ export interface EmbedState {
   beside: SchemeName[];
   /** Side by side: the Hausdorff distance between the first two panes, and their colours by it. */
   distance: boolean;
+  /** Width of the drawn lines, CSS pixels (render/line-style.ts). */
+  lineWidth: number;
   problems: { attribute: string; message: string }[];
 }
 
@@ -144,6 +147,18 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     if (t >= 0 && t <= 1) split = t;
     else problems.push({ attribute: 'split', message: `split must be a number from 0 to 1, not "${splitText}".` });
   }
+  const widthText = attr('line-width');
+  let lineWidth = DEFAULT_LINE_WIDTH;
+  if (widthText !== null && widthText.trim() !== '') {
+    const width = parseLineWidth(widthText);
+    if (width !== null) lineWidth = width;
+    else {
+      problems.push({
+        attribute: 'line-width',
+        message: `line-width must be a width from ${MIN_LINE_WIDTH} to ${MAX_LINE_WIDTH} pixels, not "${widthText}".`,
+      });
+    }
+  }
   const besideText = attr('beside');
   let beside: SchemeName[] = [];
   if (besideText !== null) {
@@ -173,6 +188,7 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     vertex,
     split,
     beside,
+    lineWidth,
     distance: flag('distance', true),
     problems,
   };

@@ -26,6 +26,7 @@ if (params.view) viewer.setAttribute('view', formatViewString(params.view));
 if (params.rules) viewer.setAttribute('rules', params.rules);
 viewer.setAttribute('controls', params.controls ?? 'minimal');
 if (params.beside) viewer.setAttribute('beside', params.beside.join(' '));
+if (params.lineWidth !== undefined) viewer.setAttribute('line-width', String(params.lineWidth));
 // Read by the element, which names a bad value in an `error` event (posted to the parent).
 for (const key of ['alt', 'background', 'tool', 'vertex', 'split', 'distance']) {
   const value = query.get(key);

@@ -48,6 +48,7 @@ const DISPLAY_ATTRIBUTES = new Set([
   'split',
   'beside',
   'distance',
+  'line-width',
 ]);
 
 export class SubdivViewerElement extends ViewerAttributes {
@@ -329,6 +330,7 @@ export class SubdivViewerElement extends ViewerAttributes {
     if (this.sync.reportProblems(want.problems)) void this.sync.run();
     if (!want.src && viewer.state.levelCount === 0) this.chrome.setPlaceholder('No model: set the src attribute.');
     if (viewer.state.renderMode !== want.renderMode) viewer.setRenderMode(want.renderMode);
+    if (viewer.state.lineWidth !== want.lineWidth) viewer.setLineWidth(want.lineWidth);
     for (const name of OVERLAY_NAMES) {
       if (viewer.state.overlays[name] !== want.overlays[name]) viewer.setOverlay(name, want.overlays[name]);
     }

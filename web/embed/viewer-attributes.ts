@@ -30,6 +30,7 @@ const PROPERTIES = {
   split: 'split',
   beside: 'beside',
   distance: 'distance',
+  'line-width': 'lineWidth',
 } as const;
 
 /** The attributes the element observes. */
@@ -159,6 +160,13 @@ export class ViewerAttributes extends HTMLElement {
   }
   set split(value: number) {
     this.setAttribute('split', String(value));
+  }
+  /** Width of the drawn lines in CSS pixels (a ×4 PNG's are four times as wide). */
+  get lineWidth(): number {
+    return this.readState().lineWidth;
+  }
+  set lineWidth(value: number) {
+    this.setAttribute('line-width', String(value));
   }
 
   /**

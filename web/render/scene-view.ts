@@ -12,14 +12,12 @@ import {
   BufferGeometry,
   Color,
   Float32BufferAttribute,
-  LineBasicMaterial,
   LineSegments,
   Mesh,
   type Object3D,
   PerspectiveCamera,
   Points,
   PointsMaterial,
-  Quaternion,
   Scene,
   Sphere,
   Vector3,
@@ -29,11 +27,14 @@ import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
+import { orbitCamera, panCamera, zoomCamera } from './camera-moves';
+import { fitCamera, fitDistance, freeRect, viewOffsetPixels } from './fit';
 import type { LevelGraphics } from './level-graphics';
 import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
 import { addLights, SURFACE_COLORS, SurfaceMaterials } from './surface-materials';
+import { ViewLines } from './view-lines';
 import type { ViewState } from './view-state';
 
 /** Colours shared by the WebGL view and the SVG export. */
@@ -109,9 +110,8 @@ export class SceneView {
   private readonly scene = new Scene();
   private readonly controls: TrackballControls;
   private readonly surface: Mesh;
-  private readonly edgeLines: LineSegments;
-  private readonly controlLines: LineSegments;
-  private readonly curveLines: LineSegments;
+  /** The polygon edges, the cage and the marked curves: fat lines (WebGL's own are one pixel wide). */
+  private readonly lines = new ViewLines(VIEW_COLORS);
   private readonly creaseLines: LineSegments2;
   private readonly borderLines: LineSegments2;
   private readonly cornerPoints: Points<BufferGeometry, PointsMaterial>;
@@ -120,7 +120,9 @@ export class SceneView {
   /** The stencil inspector's parents (points) and their weights (labels over the canvas). */
   private readonly parentPoints: Points<BufferGeometry, PointsMaterial>;
   /** Thin lines from the inspected vertex to each parent. */
-  private readonly parentLines: LineSegments;
+  private readonly parentLines: LineSegments2;
+  /** Where the target is drawn (NDC), so the model clears the panels over the view: set by {@link fit}. */
+  private offset: [number, number] = [0, 0];
   private readonly labels = new CSS2DRenderer();
   private labelObjects: CSS2DObject[] = [];
   /** Level 0's graphics (the control mesh) and the shown level's, for picking. */
@@ -166,11 +168,6 @@ export class SceneView {
     this.scene.add(this.camera);
     addLights(this.scene, this.camera);
     this.surface = new Mesh(undefined, this.materials.smooth);
-    this.edgeLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.edges }));
-    this.controlLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.control }));
-    this.controlLines.renderOrder = 1;
-    this.curveLines = new LineSegments(undefined, new LineBasicMaterial({ color: VIEW_COLORS.curves }));
-    this.curveLines.renderOrder = 2;
     // Sharp edges and corners (their colours say how sharp): drawn over everything else.
     this.creaseLines = new LineSegments2(
       new LineSegmentsGeometry(),
@@ -212,18 +209,18 @@ export class SceneView {
       new PointsMaterial({ color: VIEW_COLORS.parents, size: 12, sizeAttenuation: false }),
     );
     this.parentPoints.renderOrder = 3.5;
-    this.parentLines = new LineSegments(
-      new BufferGeometry(),
-      new LineBasicMaterial({ color: VIEW_COLORS.parents, transparent: true, opacity: 0.7 }),
+    this.parentLines = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({ color: VIEW_COLORS.parents, transparent: true, opacity: 0.7 }),
     );
     this.parentLines.renderOrder = 3;
     this.labels.domElement.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
     container.append(this.labels.domElement);
     for (const object of [
       this.surface,
-      this.edgeLines,
-      this.controlLines,
-      this.curveLines,
+      this.lines.edges,
+      this.lines.control,
+      this.lines.curves,
       this.creaseLines,
       this.borderLines,
       this.cornerPoints,
@@ -299,15 +296,13 @@ export class SceneView {
     if (graphics) {
       showParts(this.surface, graphics.surfaceParts);
       this.materials.setSide(graphics.side);
-      showParts(this.edgeLines, graphics.edgeParts);
-      if (graphics.curves) this.curveLines.geometry = graphics.curves;
       if (graphics.creases) this.creaseLines.geometry = graphics.creases;
       if (graphics.corners) this.cornerPoints.geometry = graphics.corners;
       if (graphics.borders) this.borderLines.geometry = graphics.borders;
     }
     this.applyMaterial();
     this.surface.userData.hasLevel = graphics !== null;
-    this.curveLines.userData.hasLevel = graphics?.curves != null;
+    this.lines.curves.userData.hasLevel = graphics?.curves != null;
     this.creaseLines.userData.hasLevel = graphics?.creases != null;
     this.cornerPoints.userData.hasLevel = graphics?.corners != null;
     this.borderLines.userData.hasLevel = graphics?.borders != null;
@@ -317,8 +312,7 @@ export class SceneView {
   /** The level-0 graphics whose polygon edges form the control-mesh overlay. */
   setControlMesh(graphics: LevelGraphics | null): void {
     this.control = graphics;
-    if (graphics) this.controlLines.geometry = graphics.edges;
-    this.controlLines.userData.hasLevel = graphics !== null;
+    this.lines.control.userData.hasLevel = graphics !== null;
     this.applyVisibility();
   }
 
@@ -371,7 +365,7 @@ export class SceneView {
   /** Points the camera at `sphere` from the default direction, at a distance that shows all of it. */
   fitSphere(sphere: Sphere): void {
     this.radius = Math.max(sphere.radius, 1e-9);
-    const distance = this.fitDistance(this.radius);
+    const distance = fitDistance(this.radius, this.camera.fov, this.camera.aspect);
     this.controls.target.copy(sphere.center);
     this.camera.up.set(0, 1, 0);
     this.camera.position.copy(sphere.center).addScaledVector(FIT_DIRECTION, distance);
@@ -383,14 +377,92 @@ export class SceneView {
   }
 
   /**
-   * How far from its centre the camera shows a sphere of `radius` whole, by
-   * the narrower of the two fields of view: a view taller than wide (a
-   * side-by-side pane, a phone held upright) sees less across than up and down.
+   * Frames what is shown (fit.ts): the level, the cage when it is drawn and
+   * a tool's objects, inside the part of the view no panel marked
+   * `data-covers-view` covers; looking from `view` (a canonical view's
+   * direction and up) or from the default direction.
    */
-  private fitDistance(radius: number): number {
-    const vertical = ((this.camera.fov / 2) * Math.PI) / 180;
-    const horizontal = Math.atan(Math.tan(vertical) * this.camera.aspect);
-    return (radius / Math.sin(Math.min(vertical, horizontal))) * 1.2;
+  fit(view?: { direction: readonly number[]; up: readonly number[] }): void {
+    const points: ArrayLike<number>[] = [];
+    if (this.shown) points.push(this.shown.surface.getAttribute('position').array);
+    if (this.control && this.lines.control.visible) points.push(this.control.surface.getAttribute('position').array);
+    if (this.extras) {
+      const box = new Box3().setFromObject(this.extras);
+      if (!box.isEmpty()) points.push([...box.min.toArray(), ...box.max.toArray()]);
+    }
+    const direction = view ? new Vector3().fromArray(view.direction) : FIT_DIRECTION.clone();
+    const up = new Vector3().fromArray(view?.up ?? [0, 1, 0]);
+    const { width, height } = this.size;
+    const canvas = this.canvas.getBoundingClientRect();
+    const covers = [...this.container.querySelectorAll<HTMLElement>('[data-covers-view]')]
+      .filter((e) => e.getClientRects().length > 0)
+      .map((e) => e.getBoundingClientRect())
+      .map((r) => ({
+        left: r.left - canvas.left,
+        top: r.top - canvas.top,
+        right: r.right - canvas.left,
+        bottom: r.bottom - canvas.top,
+      }));
+    const fitted = fitCamera({
+      points,
+      direction,
+      up,
+      fov: this.camera.fov,
+      aspect: this.camera.aspect,
+      free: freeRect(width, height, covers),
+    });
+    if (!fitted) return;
+    this.offset = fitted.offset;
+    this.applyOffset();
+    this.radius = Math.max(fitted.radius, 1e-9);
+    this.setView({
+      position: fitted.position.toArray(),
+      target: fitted.target.toArray(),
+      up: fitted.up.toArray(),
+    });
+  }
+
+  /** Where the target is drawn, in NDC (x right, y up): Fit's shift that keeps the model clear of the panels. */
+  get viewOffset(): [number, number] {
+    return [...this.offset];
+  }
+
+  /** Shifts the projection by {@link offset} (three's view offset; none when it is zero). */
+  private applyOffset(): void {
+    const { width, height } = this.size;
+    if (this.offset[0] === 0 && this.offset[1] === 0) {
+      this.camera.clearViewOffset();
+      return;
+    }
+    const [x, y] = viewOffsetPixels(this.offset, width, height);
+    this.camera.setViewOffset(width, height, x, y, width, height);
+  }
+
+  /** Sets the line-width setting (CSS pixels; line-style.ts). */
+  setLineWidth(width: number): void {
+    this.lines.width = width;
+    this.dirty = true;
+  }
+
+  get lineWidthSetting(): number {
+    return this.lines.width;
+  }
+
+  /** The opacity the polygon edges are drawn with now (line-style.ts, edgeOpacity). */
+  edgeOpacity(): number {
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    return this.shown ? this.lines.edgeOpacity(this.shown, this.camera, distance, this.size.height) : 1;
+  }
+
+  /** Gives each fat line its width for a picture of `pixelsPerCss` device pixels a CSS pixel, and the edges their opacity. */
+  private styleLines(pixelsPerCss: number): void {
+    this.lines.style(pixelsPerCss, this.shown, this.control, this.edgeOpacity(), [
+      [this.creaseLines, 'creases'],
+      [this.parentLines, 'parents'],
+      [this.borderLines, 'border'],
+    ]);
+    // The selection is a marker of fixed size, only scaled with the picture.
+    this.selectedLines.material.linewidth = 12 * pixelsPerCss;
   }
 
   /** The current viewpoint. */
@@ -412,39 +484,21 @@ export class SceneView {
     this.onViewChange?.();
   }
 
-  /**
-   * Keyboard camera moves (the trackball only follows the pointer): turns the
-   * camera about the target by `yawDeg` around its up axis and `pitchDeg`
-   * around its right axis.
-   */
+  /** Keyboard camera moves (camera-moves.ts): turns about the target, around the camera's up and right axes. */
   orbit(yawDeg: number, pitchDeg: number): void {
-    const eye = new Vector3().subVectors(this.camera.position, this.controls.target);
-    const right = new Vector3().crossVectors(this.camera.up, eye).normalize();
-    const yaw = new Quaternion().setFromAxisAngle(this.camera.up, (yawDeg * Math.PI) / 180);
-    const pitch = new Quaternion().setFromAxisAngle(right, (pitchDeg * Math.PI) / 180);
-    const turn = yaw.multiply(pitch);
-    eye.applyQuaternion(turn);
-    this.camera.up.applyQuaternion(turn);
-    this.camera.position.copy(this.controls.target).add(eye);
+    orbitCamera(this.camera, this.controls.target, yawDeg, pitchDeg);
     this.afterKeyboardMove();
   }
 
   /** Moves the camera towards the target (factor < 1) or away from it (factor > 1). */
   zoom(factor: number): void {
-    const eye = new Vector3().subVectors(this.camera.position, this.controls.target).multiplyScalar(factor);
-    this.camera.position.copy(this.controls.target).add(eye);
+    zoomCamera(this.camera, this.controls.target, factor);
     this.afterKeyboardMove();
   }
 
   /** Slides camera and target sideways by fractions of the view's height. */
   pan(dx: number, dy: number): void {
-    const distance = this.camera.position.distanceTo(this.controls.target);
-    const height = 2 * distance * Math.tan(((this.camera.fov / 2) * Math.PI) / 180);
-    const eye = new Vector3().subVectors(this.camera.position, this.controls.target);
-    const right = new Vector3().crossVectors(this.camera.up, eye).normalize();
-    const shift = right.multiplyScalar(dx * height).addScaledVector(this.camera.up, dy * height);
-    this.camera.position.add(shift);
-    this.controls.target.add(shift);
+    panCamera(this.camera, this.controls.target, dx, dy);
     this.afterKeyboardMove();
   }
 
@@ -514,8 +568,7 @@ export class SceneView {
       }
     }
     this.parentLines.geometry.dispose();
-    this.parentLines.geometry = new BufferGeometry();
-    this.parentLines.geometry.setAttribute('position', new Float32BufferAttribute(spokes, 3));
+    this.parentLines.geometry = new LineSegmentsGeometry().setPositions(spokes);
     this.parentLines.visible = vertex.length === 3 && parents.length > 0;
     for (const object of this.labelObjects) {
       this.scene.remove(object);
@@ -555,7 +608,7 @@ export class SceneView {
   /** Moves the camera to show `sphere`, looking from where it looks now. */
   frameSphere(sphere: Sphere): void {
     const direction = this.camera.position.clone().sub(this.controls.target).normalize();
-    const distance = this.fitDistance(Math.max(sphere.radius, 1e-9));
+    const distance = fitDistance(Math.max(sphere.radius, 1e-9), this.camera.fov, this.camera.aspect);
     this.controls.target.copy(sphere.center);
     this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
     this.camera.lookAt(sphere.center);
@@ -576,8 +629,7 @@ export class SceneView {
 
   /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */
   edgeSegments(): number {
-    const parts = [this.edgeLines, ...this.edgeLines.children.filter((c) => c.visible)] as LineSegments[];
-    return parts.reduce((sum, part) => sum + (part.geometry.index?.count ?? 0), 0) / 2;
+    return (this.shown?.edges.index?.count ?? 0) / 2;
   }
 
   /** Geometries and textures alive on the GPU for the whole page (three's renderer.info), for leak checks. */
@@ -593,7 +645,7 @@ export class SceneView {
     this.background = color;
     // Polygon edges stay visible on a dark background.
     const dark = color === null ? darkBehind : new Color(color).getHSL({ h: 0, s: 0, l: 0 }).l < 0.35;
-    (this.edgeLines.material as LineBasicMaterial).color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
+    this.lines.edges.material.color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
     this.dirty = true;
   }
 
@@ -605,6 +657,7 @@ export class SceneView {
   /** Draws now. */
   render(): void {
     this.dirty = false;
+    this.styleLines(this.canvas.width / this.size.width);
     this.renderer.draw(this.scene, this.camera, this.context, this.canvas.width, this.canvas.height, this.background);
     if (this.labelObjects.length > 0) this.labels.render(this.scene, this.camera);
     this.onDraw?.();
@@ -612,9 +665,9 @@ export class SceneView {
 
   /** The geometries the next draw needs on the GPU. */
   private shownGeometries(): BufferGeometry[] {
-    const objects = [this.surface, this.edgeLines, this.controlLines, this.curveLines].filter((o) => o.visible);
-    const parts = objects.flatMap((o) => [o, ...o.children.filter((c) => c.visible)]) as (Mesh | LineSegments)[];
-    return parts.map((o) => o.geometry);
+    const parts = [this.surface, ...this.surface.children.filter((c) => c.visible)] as Mesh[];
+    const surface = this.surface.visible ? parts.map((o) => o.geometry) : [];
+    return [...surface, ...this.lines.geometries(this.shown, this.control)];
   }
 
   /** Size of the view in CSS pixels. */
@@ -641,7 +694,10 @@ export class SceneView {
     canvas.height = h;
     const context = canvas.getContext('2d');
     if (!context) return Promise.reject(new Error('This browser cannot draw on a canvas.'));
+    // Lines as wide, relative to the picture, as on screen: ×4 pixels, ×4 line widths.
+    this.styleLines(w / width);
     this.renderer.draw(this.scene, this.camera, context, w, h, transparent ? null : this.background);
+    this.styleLines(this.canvas.width / width);
     if (w > this.canvas.width || h > this.canvas.height) this.renderer.shrink();
     return new Promise<Blob>((resolve, reject) =>
       canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('The browser could not encode the PNG.'))), 'image/png'),
@@ -657,9 +713,7 @@ export class SceneView {
     this.controls.dispose();
     this.setBoundingBox(null, null);
     this.materials.dispose();
-    (this.edgeLines.material as LineBasicMaterial).dispose();
-    (this.controlLines.material as LineBasicMaterial).dispose();
-    (this.curveLines.material as LineBasicMaterial).dispose();
+    this.lines.dispose();
     this.creaseLines.material.dispose();
     this.borderLines.material.dispose();
     (this.cornerPoints.material as PointsMaterial).dispose();
@@ -670,17 +724,17 @@ export class SceneView {
       object.material.dispose();
     }
     this.parentLines.geometry.dispose();
-    (this.parentLines.material as LineBasicMaterial).dispose();
+    this.parentLines.material.dispose();
     this.canvas.remove();
   }
 
   private applyVisibility(): void {
     const hasLevel = this.surface.userData.hasLevel === true;
     this.surface.visible = hasLevel && this.mode !== 'wireframe';
-    this.edgeLines.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
-    this.borderLines.visible = this.edgeLines.visible && this.borderLines.userData.hasLevel === true;
-    this.controlLines.visible = this.controlLines.userData.hasLevel === true && this.overlay('control');
-    this.curveLines.visible = this.curveLines.userData.hasLevel === true && this.overlay('curves');
+    this.lines.edges.visible = hasLevel && (this.mode === 'edges' || this.mode === 'wireframe');
+    this.lines.control.visible = this.lines.control.userData.hasLevel === true && this.overlay('control');
+    this.lines.curves.visible = this.lines.curves.userData.hasLevel === true && this.overlay('curves');
+    this.borderLines.visible = this.lines.edges.visible && this.borderLines.userData.hasLevel === true;
     this.creaseLines.visible = this.creaseLines.userData.hasLevel === true && this.overlay('creases');
     this.cornerPoints.visible = this.cornerPoints.userData.hasLevel === true && this.overlay('creases');
     if (this.bboxHelper) this.bboxHelper.visible = this.overlay('bbox');
@@ -693,6 +747,7 @@ export class SceneView {
     this.canvas.width = Math.round(width * ratio);
     this.canvas.height = Math.round(height * ratio);
     this.camera.aspect = width / height;
+    this.applyOffset();
     this.camera.updateProjectionMatrix();
     this.labels.setSize(width, height);
     this.controls.handleResize();

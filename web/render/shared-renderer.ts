@@ -21,6 +21,7 @@ import {
   MeshBasicMaterial,
   OrthographicCamera,
   Scene,
+  Sphere,
   WebGLRenderer,
 } from 'three';
 
@@ -160,6 +161,9 @@ export class SharedRenderer {
     if (index) geometry.setIndex(attribute as BufferAttribute);
     else geometry.setAttribute('position', attribute);
     geometry.setDrawRange(0, 0);
+    // three sorts objects by their bounding sphere and would compute it from the buffer: a pass over
+    // every vertex, and a NaN radius (a console error) for a fat line's interleaved ends.
+    geometry.boundingSphere = new Sphere();
     this.uploadMesh.geometry = geometry;
     const r = this.renderer;
     r.setViewport(0, 0, 1, 1);

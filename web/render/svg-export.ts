@@ -9,6 +9,7 @@
  * SVGRenderer draws triangles, so the projection is done here.
  */
 import { Color, type PerspectiveCamera, Vector3 } from 'three';
+import { DEFAULT_LINE_WIDTH, type LineKind, lineWidthPx } from './line-style';
 import { VIEW_COLORS } from './scene-view';
 import { lightShare } from './surface-materials';
 
@@ -47,6 +48,10 @@ export interface SvgExportInput {
   corners?: { points: LineSet; color: string }[];
   /** Fill the background (false: transparent). */
   background: boolean;
+  /** The line-width setting (CSS pixels; line-style.ts), default 1. */
+  lineWidth?: number;
+  /** The polygon edges' opacity as the view draws them (line-style.ts, edgeOpacity), default 1. */
+  edgeOpacity?: number;
 }
 
 /** Number formatting: two decimals are sub-pixel at any export size. */
@@ -115,10 +120,13 @@ export function exportSvg(input: SvgExportInput): string {
   );
   if (input.background) out.push(`<rect width="${width}" height="${height}" fill="${VIEW_COLORS.background}"/>`);
   // Lines behind the surface first (ids ending in -back), the faces over them, then the lines in front.
+  // The view's widths (line-style.ts): the same multiples of the setting.
+  const lineWidth = input.lineWidth ?? DEFAULT_LINE_WIDTH;
+  const w = (kind: LineKind) => n(lineWidthPx(kind, lineWidth, 1));
   const overlays = [
-    { lines: input.curves, id: 'control-curves', color: VIEW_COLORS.curves, width: 1.2 },
-    { lines: input.control, id: 'control-mesh', color: VIEW_COLORS.control, width: 1.2 },
-    ...(input.creases ?? []).map(({ lines, color }, i) => ({ lines, id: `creases-${i}`, color, width: 3 })),
+    { lines: input.curves, id: 'control-curves', color: VIEW_COLORS.curves, width: w('curves') },
+    { lines: input.control, id: 'control-mesh', color: VIEW_COLORS.control, width: w('control') },
+    ...(input.creases ?? []).map(({ lines, color }, i) => ({ lines, id: `creases-${i}`, color, width: w('creases') })),
   ].flatMap(({ lines, id, color, width: w }) => (lines ? [{ ...splitByFacing(lines, camera), id, color, w }] : []));
   const dots = (input.corners ?? []).map(({ points, color }, i) => ({
     ...splitPointsByFacing(points, camera),
@@ -127,7 +135,10 @@ export function exportSvg(input: SvgExportInput): string {
   }));
   for (const o of overlays) out.push(linePath(o.back, `${o.id}-back`, o.color, camera, width, height, o.w));
   for (const o of dots) out.push(dotGroup(o.back, `${o.id}-back`, o.color, camera, width, height));
-  out.push(`<g id="faces" stroke="${VIEW_COLORS.edges}" stroke-width="0.6" stroke-linejoin="round">`);
+  const edgeOpacity = n(input.edgeOpacity ?? 1);
+  out.push(
+    `<g id="faces" stroke="${VIEW_COLORS.edges}" stroke-width="${w('edges')}" stroke-opacity="${edgeOpacity}" stroke-linejoin="round">`,
+  );
   for (const f of faces) out.push(`<polygon points="${f.points}" fill="${f.fill}"/>`);
   out.push('</g>');
   for (const o of overlays) out.push(linePath(o.front, o.id, o.color, camera, width, height, o.w));
@@ -245,7 +256,7 @@ function linePath(
   camera: PerspectiveCamera,
   width: number,
   height: number,
-  strokeWidth: number,
+  strokeWidth: string,
 ): string {
   const project = (i: number): string => screenPoint(lines.positions, i, camera, width, height).join(' ');
   const d: string[] = [];

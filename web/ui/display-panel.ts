@@ -1,15 +1,12 @@
-/** Render mode menu, overlay toggles, and the view buttons (fit, save, restore). */
+/** Render mode menu, overlay toggles, and the view's own controls (view-controls.ts) below them. */
 
 import { type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
 import type { ViewerState } from '../viewer/subdiv-viewer';
-import { button, el, section, uniqueId } from './dom';
+import { el, section, uniqueId } from './dom';
 
 export interface DisplayPanelHandlers {
   onRenderMode: (mode: RenderMode) => void;
   onOverlay: (name: OverlayName, visible: boolean) => void;
-  onFit: () => void;
-  onSaveView: () => void;
-  onRestoreView: () => void;
 }
 
 /** Overlay toggles in display order. */
@@ -35,9 +32,9 @@ export class DisplayPanel {
   readonly element: HTMLElement;
   private readonly mode: HTMLSelectElement;
   private readonly toggles = new Map<OverlayName, HTMLInputElement>();
-  private readonly restore: HTMLButtonElement;
 
-  constructor(handlers: DisplayPanelHandlers) {
+  /** `viewControls`: the view's buttons and settings, below the toggles. */
+  constructor(handlers: DisplayPanelHandlers, viewControls: Node) {
     const modeId = uniqueId('render-mode');
     this.mode = el('select', { testId: 'controls.render-mode', attrs: { id: modeId, 'aria-keyshortcuts': 'r' } });
     for (const { mode, label } of RENDER_MODES) this.mode.append(el('option', { text: label, attrs: { value: mode } }));
@@ -52,27 +49,19 @@ export class DisplayPanel {
       this.toggles.set(name, input);
       return el('label', { className: 'check', attrs: { for: id } }, input, ` ${label} (${key.toUpperCase()})`);
     });
-    this.restore = button('Restore view', 'view.restore', handlers.onRestoreView, 'Go back to the saved viewpoint');
     this.element = section(
       'Display',
       'display-panel',
       el('label', { attrs: { for: modeId }, text: 'Render mode (R)' }),
       this.mode,
       ...toggles,
-      el(
-        'div',
-        { className: 'row wrap' },
-        button('Fit view', 'view.fit', handlers.onFit, 'Show the whole model (F)'),
-        button('Save view', 'view.save', handlers.onSaveView, 'Remember this viewpoint, also for other models'),
-        this.restore,
-      ),
+      viewControls,
     );
   }
 
-  update(state: ViewerState, hasSavedView: boolean): void {
+  update(state: ViewerState): void {
     this.mode.value = state.renderMode;
     for (const [name, input] of this.toggles) input.checked = state.overlays[name];
     for (const [name, input] of this.toggles) input.disabled = !overlayAvailable(name, state);
-    this.restore.disabled = !hasSavedView;
   }
 }

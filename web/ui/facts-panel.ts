@@ -83,7 +83,12 @@ export class FactsPanel {
     this.summary = el('summary', { testId: 'facts.summary', className: 'facts-summary', text: 'Facts' });
     const details = el(
       'details',
-      { testId: 'facts', className: 'facts-panel', attrs: { 'aria-label': 'Facts of the shown level' } },
+      // data-covers-view: Fit keeps the model out from under it (render/fit.ts).
+      {
+        testId: 'facts',
+        className: 'facts-panel',
+        attrs: { 'aria-label': 'Facts of the shown level', 'data-covers-view': '' },
+      },
       this.summary,
       list,
     );

@@ -7,6 +7,8 @@ export interface ShortcutHandlers {
   cycleRenderMode: () => void;
   toggleOverlay: (name: OverlayName) => void;
   fit: () => void;
+  /** The next canonical view, front → top → side → iso (absent where there are none). */
+  nextView?: () => void;
   stepLevel: (delta: number) => void;
   /** Absent where there is no file to open (an embedded viewer). */
   open?: () => void;
@@ -34,7 +36,8 @@ export const SHORTCUTS: readonly { keys: string; action: string }[] = [
   { keys: 'B', action: 'Toggle the bounding box' },
   { keys: 'E', action: 'Toggle the control-edge curves' },
   { keys: 'K', action: 'Toggle the creases and corners (tagged models)' },
-  { keys: 'F', action: 'Fit the view to the model' },
+  { keys: 'F', action: 'Fit the view to the model (the control mesh and markers included)' },
+  { keys: 'V', action: 'Next canonical view: front, top, side, iso' },
   { keys: 'O', action: 'Open a file' },
   { keys: '← ↑ → ↓', action: 'Rotate (the 3D view focused; with Shift: pan)' },
   { keys: '+ / −', action: 'Zoom in / out (the 3D view focused)' },
@@ -104,6 +107,7 @@ export function installShortcuts(
       e: () => handlers.toggleOverlay('curves'),
       k: () => handlers.toggleOverlay('creases'),
       f: handlers.fit,
+      ...(handlers.nextView ? { v: handlers.nextView } : {}),
       '[': () => handlers.stepLevel(-1),
       ']': () => handlers.stepLevel(1),
       ...(handlers.open ? { o: handlers.open } : {}),

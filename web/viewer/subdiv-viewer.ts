@@ -40,6 +40,7 @@ import {
   type WorkerClient,
 } from '../core/worker-client';
 import { fanPolygons } from '../render/fan-polygons';
+import { CANONICAL_VIEWS, type CanonicalView } from '../render/fit';
 import { LevelGraphics, sharpnessColor } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
@@ -86,6 +87,8 @@ export interface BusyState {
   /** 'compute': a teaching tool's request (stencils, a basis function). */
   kind: 'load' | 'subdivide' | 'export' | 'compute';
   label: string;
+  /** The level a step computes ('subdivide'). */
+  level?: number;
   /** performance.now() when it started. */
   since: number;
 }
@@ -148,6 +151,8 @@ export interface ViewerState {
   stepMs: number | null;
   renderMode: RenderMode;
   overlays: Record<OverlayName, boolean>;
+  /** The line-width setting, CSS pixels (render/line-style.ts). */
+  lineWidth: number;
   busy: BusyState | null;
 }
 
@@ -271,6 +276,7 @@ export class SubdivViewer {
         curves: this.view.overlay('curves'),
         creases: this.view.overlay('creases'),
       },
+      lineWidth: this.view.lineWidthSetting,
       busy: this.busyState,
     };
   }
@@ -324,7 +330,12 @@ export class SubdivViewer {
     const generation = this.generation;
     const from = this.levels.length - 1;
     const options = this.stepOptions(from, 1);
-    this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
+    this.setBusy({
+      kind: 'subdivide',
+      label: `Subdividing to level ${from + 1}…`,
+      level: from + 1,
+      since: performance.now(),
+    });
     try {
       const prediction = await this.predictionFrom(from, options);
       const estimatedBytes = stepBytes(prediction);
@@ -333,7 +344,12 @@ export class SubdivViewer {
         const info = { level: from + 1, prediction, estimatedBytes, budgetBytes: this.memoryBudget };
         if (!(await this.confirmLargeStep(info))) return false;
         if (generation !== this.generation) return false;
-        this.setBusy({ kind: 'subdivide', label: `Subdividing to level ${from + 1}…`, since: performance.now() });
+        this.setBusy({
+          kind: 'subdivide',
+          label: `Subdividing to level ${from + 1}…`,
+          level: from + 1,
+          since: performance.now(),
+        });
       }
       const data = await this.withHandle(from, (h) => this.core.subdivide(h, options));
       if (generation !== this.generation) {
@@ -542,10 +558,18 @@ export class SubdivViewer {
     this.setBusy(null);
   }
 
-  /** Points the camera at the whole model. */
-  fitView(): void {
+  /** Frames what is shown (the level, the cage when drawn, a tool's objects), from where the camera looks or from a canonical view. */
+  fitView(view?: CanonicalView): void {
     const level = this.levels[this.current];
-    if (level?.graphics) this.view.fitSphere(level.graphics.boundingSphere);
+    if (!level?.graphics) return;
+    const canonical = CANONICAL_VIEWS.find((v) => v.name === view);
+    this.view.fit(canonical);
+  }
+
+  /** Sets the width of the drawn lines (CSS pixels; render/line-style.ts). */
+  setLineWidth(width: number): void {
+    this.view.setLineWidth(width);
+    this.emit();
   }
 
   getView(): ViewState {
@@ -597,6 +621,8 @@ export class SubdivViewer {
       creases,
       corners,
       background: !transparent,
+      lineWidth: this.view.lineWidthSetting,
+      edgeOpacity: this.view.edgeOpacity(),
     });
   }
 

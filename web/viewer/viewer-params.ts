@@ -6,6 +6,7 @@
  * named in `problems`, never guessed.
  */
 import type { SchemeName } from '../core/mesh';
+import { MAX_LINE_WIDTH, MIN_LINE_WIDTH, parseLineWidth } from '../render/line-style';
 import { OVERLAY_NAMES, type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { formatViewString, parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName, PANE_SCHEMES } from './scheme-info';
@@ -37,6 +38,8 @@ export interface ViewerParams {
   controls?: ControlsMode;
   /** Schemes shown side by side with `scheme`, in panes beside it (one to three). */
   beside?: SchemeName[];
+  /** The line-width setting, CSS pixels (render/line-style.ts). */
+  lineWidth?: number;
 }
 
 /** Parameter names in links; the element's attributes use the same names, except `render-mode` for `mode`. */
@@ -50,6 +53,7 @@ export const PARAM_KEYS = {
   rules: 'rules',
   controls: 'controls',
   beside: 'beside',
+  lineWidth: 'lines',
 } as const;
 
 /** The link/attribute name of each overlay. */
@@ -158,6 +162,13 @@ export function parseViewerParams(text: string | URLSearchParams): ParsedParams 
     if (problem) problems.push(problem);
     else if (schemes.length > 0) params.beside = schemes;
   }
+  const lines = get(PARAM_KEYS.lineWidth);
+  if (lines !== null) {
+    const width = parseLineWidth(lines);
+    if (width === null)
+      problems.push(`lines must be a width from ${MIN_LINE_WIDTH} to ${MAX_LINE_WIDTH} pixels, not "${lines}".`);
+    else params.lineWidth = width;
+  }
   return { params, problems };
 }
 
@@ -177,5 +188,6 @@ export function formatViewerParams(params: ViewerParams): URLSearchParams {
   if (params.view) query.set(PARAM_KEYS.view, formatViewString(params.view));
   if (params.controls) query.set(PARAM_KEYS.controls, params.controls);
   if (params.beside && params.beside.length > 0) query.set(PARAM_KEYS.beside, params.beside.join(','));
+  if (params.lineWidth !== undefined) query.set(PARAM_KEYS.lineWidth, String(params.lineWidth));
   return query;
 }
