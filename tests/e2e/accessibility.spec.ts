@@ -1,8 +1,9 @@
 /**
  * axe-core (Deque's accessibility engine, the rules of WCAG 2.1 A and AA
  * and its best practices) finds no violation in the app's main states: empty,
- * a model with levels, the custom rules, open menus, an error, side by side
- * with Inspect's results, and a phone.
+ * a model with levels, the zebra and curvature modes with the colour bar,
+ * saved views, the custom rules, open menus, an error, side by side with
+ * Inspect's results, and a phone.
  */
 import { readFileSync } from 'node:fs';
 import AxeBuilder from '@axe-core/playwright';
@@ -36,6 +37,16 @@ test('no axe violations: empty, a model with levels, the rules, open menus, an e
   await app.subdivide();
   await app.subdivide();
   await expectNoViolations(app.page, 'the cube at level 2');
+  for (const mode of ['zebra', 'mean-curvature']) {
+    await app.byTestId('controls.render-mode').selectOption(mode);
+    await expectNoViolations(app.page, `the ${mode} mode`);
+  }
+  await expect(app.page.getByText(/^Mean curvature H/)).toBeVisible();
+  await app.byTestId('view.top').click();
+  await app.byTestId('view.save').click();
+  await app.byTestId('view.save').click();
+  await expect(app.byTestId('view.saved').locator('option')).toHaveCount(2);
+  await expectNoViolations(app.page, 'two saved views');
   await app.chooseScheme('custom');
   await expectNoViolations(app.page, 'the custom rules');
   await app.byTestId('gallery').locator('summary').click();
