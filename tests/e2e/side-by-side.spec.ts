@@ -195,3 +195,25 @@ test('Catmull-Clark beside Loop on the cube: linked panes, levels together and a
     await expect.poll(async () => (await app.hashParams()).has('beside')).toBe(false);
   });
 });
+
+test('panes opened from a link are framed together: the linear cube beside Catmull-Clark is not cut off', async ({
+  app,
+}) => {
+  await app.open('#src=meshes%2Fcube.off&scheme=catmull-clark&levels=3&beside=linear');
+  const side = () => app.page.evaluate(() => window.__subdivlab?.sideBySide() as SideBySideTestState);
+  await expect
+    .poll(async () => (await side()).panes.map((p) => `${p.scheme} ${p.level} ${p.busy}`))
+    .toEqual(['catmull-clark 3 false', 'linear 3 false']);
+  // The fit comes a frame after the last pane shows its level; the linked cameras then agree.
+  await expect
+    .poll(async () => {
+      const { canvas } = await app.state();
+      const corners = await app.page.evaluate(() => window.__subdivlab?.projected(3, 1) ?? []);
+      const inside = corners.filter((p) => p.x >= 0 && p.x <= canvas.width && p.y >= 0 && p.y <= canvas.height);
+      return `${inside.length} of ${corners.length}`;
+    })
+    .toBe('386 of 386');
+  const panes = (await side()).panes;
+  expect(panes[1].view).toEqual(panes[0].view);
+  await app.snapshot('side-by-side-framed-together');
+});

@@ -161,7 +161,7 @@ export class AppShell {
       reachLevel: (level) => this.reachLevel(level),
       confirmLargeStep: (info, scheme) => this.confirmLargeStep(info, scheme),
     });
-    this.views = new ViewActions(this.viewer);
+    this.views = new ViewActions(this.viewer, (view) => this.tools.sideBySide.fit(view));
     this.display = new DisplayPanel(
       {
         onRenderMode: (m) => this.viewer.setRenderMode(m),
@@ -337,9 +337,11 @@ export class AppShell {
       positions: async () => Array.from((await this.viewer.meshOf())?.positions ?? []),
       drawnPositions: () => Array.from(this.viewer.buffersOf(this.viewer.state.level)?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
-      projected: (level) => {
-        const { camera, size } = this.viewer.view;
-        return projectPoints(this.viewer.buffersOf(level)?.positions ?? [], camera, size.width, size.height);
+      projected: (level, pane = 0) => {
+        const viewer = this.tools.sideBySide.viewers()[pane];
+        if (!viewer) return [];
+        const { camera, size } = viewer.view;
+        return projectPoints(viewer.buffersOf(level)?.positions ?? [], camera, size.width, size.height);
       },
       vertexOnScreen: (v, shown) => {
         const at = this.viewer.view.vertexOnScreen(v, shown);

@@ -106,9 +106,10 @@ export interface SubdivLabTestApi {
   sideBySide(): SideBySideTestState;
   /**
    * Every vertex of computed level `level` (0: the control mesh) projected through the camera, in CSS
-   * pixels from the canvas's top left, not clipped (a point off the canvas has x or y outside it).
+   * pixels from the canvas's top left, not clipped (a point off the canvas has x or y outside it); in
+   * side-by-side pane `pane` (0, the first, by default).
    */
-  projected(level: number): { x: number; y: number }[];
+  projected(level: number, pane?: number): { x: number; y: number }[];
 }
 
 declare global {

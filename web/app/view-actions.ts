@@ -16,7 +16,11 @@ export class ViewActions {
   /** The canonical view shown last (V steps on from it). */
   private canonical: CanonicalView | null = null;
 
-  constructor(private readonly viewer: SubdivViewer) {
+  /** `frame` fits the views (the side-by-side panes together; default: the viewer alone). */
+  constructor(
+    private readonly viewer: SubdivViewer,
+    private readonly frame: (view?: CanonicalView) => void = (view) => viewer.fitView(view),
+  ) {
     this.controls = new ViewControls({
       onFit: () => this.fit(),
       onCanonical: (view) => this.fit(view),
@@ -30,7 +34,7 @@ export class ViewActions {
   /** Frames what is shown, from where the camera looks or from a canonical view. */
   fit(view?: CanonicalView): void {
     this.canonical = view ?? null;
-    this.viewer.fitView(view);
+    this.frame(view);
   }
 
   /** The V key: the next canonical view. */

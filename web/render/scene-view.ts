@@ -380,10 +380,11 @@ export class SceneView {
    * Frames what is shown (fit.ts): the level, the cage when it is drawn and
    * a tool's objects, inside the part of the view no panel marked
    * `data-covers-view` covers; looking from `view` (a canonical view's
-   * direction and up) or from the default direction.
+   * direction and up) or from the default direction. `also`: more points
+   * (xyz) to keep in the picture (other panes' levels).
    */
-  fit(view?: { direction: readonly number[]; up: readonly number[] }): void {
-    const points: ArrayLike<number>[] = [];
+  fit(view?: { direction: readonly number[]; up: readonly number[] }, also: readonly ArrayLike<number>[] = []): void {
+    const points: ArrayLike<number>[] = [...also];
     if (this.shown) points.push(this.shown.surface.getAttribute('position').array);
     if (this.control && this.lines.control.visible) points.push(this.control.surface.getAttribute('position').array);
     if (this.extras) {
@@ -420,6 +421,12 @@ export class SceneView {
       target: fitted.target.toArray(),
       up: fitted.up.toArray(),
     });
+  }
+
+  /** The direction from the target to the camera, and the camera's up: where it looks from now. */
+  lookDirection(): { direction: number[]; up: number[] } {
+    const direction = this.camera.position.clone().sub(this.controls.target);
+    return { direction: direction.toArray(), up: this.camera.up.toArray() };
   }
 
   /** Where the target is drawn, in NDC (x right, y up): Fit's shift that keeps the model clear of the panels. */

@@ -12,6 +12,7 @@
 import type { Mesh, SchemeName } from '../core/mesh';
 import type { HausdorffDistance } from '../core/subdiv-core';
 import { CancelledError } from '../core/worker-client';
+import type { CanonicalView } from '../render/fit';
 import { influenceColors } from '../render/level-graphics';
 import type { ViewState } from '../render/view-state';
 import { messageOf } from '../viewer/error-message';
@@ -93,6 +94,8 @@ interface ExtraPane {
   /** A pass bringing it to its target runs. */
   reaching: Promise<void> | null;
   again: boolean;
+  /** Its model loaded and its level reached (or failed), since it was added. */
+  shown: Promise<void>;
   unsubscribe: (() => void)[];
 }
 
@@ -163,8 +166,10 @@ export class SideBySide {
   /** Shows `count` panes (1 turns side by side off); new ones get a scheme the others do not show. */
   setCount(count: number): void {
     const n = Math.min(Math.max(Math.round(count), 1), MAX_PANES);
+    const before = this.extra.length;
     while (1 + this.extra.length > n) this.removeLast();
     while (1 + this.extra.length < n) this.addPane();
+    if (this.extra.length !== before) this.refitWhenShown();
     this.keepPair();
     this.remeasure();
     this.emit();
@@ -173,14 +178,39 @@ export class SideBySide {
   /** Shows `schemes` in the panes beside the first, in order (none: side by side off). */
   setBeside(schemes: readonly SchemeName[]): void {
     const wanted = schemes.slice(0, MAX_PANES - 1);
+    const before = this.extra.length;
     while (this.extra.length > wanted.length) this.removeLast();
     wanted.forEach((scheme, i) => {
       if (i < this.extra.length) this.setScheme(i + 1, scheme);
       else this.addPane(scheme);
     });
+    if (this.extra.length !== before) this.refitWhenShown();
     this.keepPair();
     this.remeasure();
     this.emit();
+  }
+
+  /**
+   * Frames what every pane shows with the linked camera (from `view` as
+   * SubdivViewer.fitView takes it): the first pane fits around its own level
+   * and the others' levels, and passes the camera on.
+   */
+  fit(view?: CanonicalView | 'current'): void {
+    this.main.fitView(
+      view,
+      this.extra.map((p) => p.viewer),
+    );
+  }
+
+  /**
+   * The panes changed size (one was added or removed): frames them all again
+   * once the new panes show their levels, so that none is cut off (a
+   * camera fitted to a wide view is too close for a narrow one).
+   */
+  private refitWhenShown(): void {
+    const shown = this.extra.map((p) => p.shown);
+    // A frame first: the views take their new sizes from a resize observer.
+    void Promise.allSettled(shown).then(() => requestAnimationFrame(() => this.fit('current')));
   }
 
   /** The schemes of the panes beside the first. */
@@ -271,6 +301,7 @@ export class SideBySide {
       loading: false,
       reaching: null,
       again: false,
+      shown: Promise.resolve(),
       unsubscribe: [],
     };
     pane.unsubscribe.push(
@@ -283,7 +314,7 @@ export class SideBySide {
       }),
     );
     this.extra.push(pane);
-    if (this.model) void this.loadInto(pane, this.model);
+    if (this.model) pane.shown = this.loadInto(pane, this.model);
   }
 
   private removeLast(): void {

@@ -558,12 +558,23 @@ export class SubdivViewer {
     this.setBusy(null);
   }
 
-  /** Frames what is shown (the level, the cage when drawn, a tool's objects), from where the camera looks or from a canonical view. */
-  fitView(view?: CanonicalView): void {
+  /**
+   * Frames what is shown (the level, the cage when drawn, a tool's
+   * objects) and the levels `also` show (panes side by side with a linked
+   * camera): from a canonical view, from where the camera looks now
+   * ('current'), or from the default direction.
+   */
+  fitView(view?: CanonicalView | 'current', also: readonly SubdivViewer[] = []): void {
     const level = this.levels[this.current];
     if (!level?.graphics) return;
-    const canonical = CANONICAL_VIEWS.find((v) => v.name === view);
-    this.view.fit(canonical);
+    const others = also.flatMap((v) => {
+      const graphics = v.levels[v.current]?.graphics;
+      return graphics ? [graphics.surface.getAttribute('position').array] : [];
+    });
+    this.view.fit(
+      view === 'current' ? this.view.lookDirection() : CANONICAL_VIEWS.find((v) => v.name === view),
+      others,
+    );
   }
 
   /** Sets the width of the drawn lines (CSS pixels; render/line-style.ts). */
