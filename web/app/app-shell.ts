@@ -103,7 +103,7 @@ export class AppShell {
     this.firstVisitHint = el('p', {
       testId: 'viewer.first-visit',
       className: 'first-visit-hint',
-      text: 'A sample to start with: drop an OFF, OBJ, PLY or STL file anywhere (or use Open…) to subdivide your own.',
+      text: 'A sample to start with: drop your own OFF, OBJ, PLY or STL file anywhere (or use Open…).',
     });
     this.firstVisitHint.hidden = true;
     this.viewer = new SubdivViewer(stage, { confirmLargeStep: (info) => this.confirmLargeStep(info) });
