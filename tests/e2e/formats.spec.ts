@@ -77,6 +77,7 @@ test('Export PLY and STL: the shown level, with the comment naming model, scheme
   await app.subdivide();
 
   await app.byTestId('export-panel').locator('summary').click();
+  await app.snapshot('formats-export-menu');
   const ply = await app.download('export.ply');
   expect(ply.suggestedFilename()).toBe('cube-catmull-clark-L1.ply');
   const plyLines = (await readFile(await ply.path(), 'utf8')).split('\n');
