@@ -372,13 +372,16 @@ TEST(IoOffErrors, InconsistentOrientation) {
   const std::string last = "4 6 4 5 7\n";
   ASSERT_EQ(text.substr(text.size() - last.size()), last);
   text.replace(text.size() - last.size(), last.size(), "4 7 5 4 6\n");
-  const std::string m =
-      read_error(text, Mesh_format::off, Status_code::invalid_mesh, 17);
+  const std::string m = read_error(text, Mesh_format::off,
+                                   Status_code::inconsistent_orientation, 17);
   EXPECT_NE(m.find("inconsistent orientation: the faces on lines "),
             std::string::npos)
       << m;
   EXPECT_NE(m.find(" and 17 both use edge "), std::string::npos) << m;
-  EXPECT_NE(m.find(" in the same direction"), std::string::npos) << m;
+  EXPECT_NE(m.find(" in the same direction; turning 1 face around makes "
+                   "them agree (repair orientation)"),
+            std::string::npos)
+      << m;
 }
 
 TEST(IoOffErrors, NoFaces) {
@@ -593,10 +596,11 @@ TEST(IoObjErrors, TopologyProblemsUseTheFilesNumbersAndLines) {
             "faces (the faces on lines "
             "6, 7 and 8)");
   EXPECT_EQ(read_error(v + "f 1 2 3\nf 1 2 4\n", Mesh_format::obj,
-                       Status_code::invalid_mesh, 7),
+                       Status_code::inconsistent_orientation, 7),
             "line 7: inconsistent orientation: the faces on lines 6 and 7 both "
             "use edge 1\u21922 in the "
-            "same direction");
+            "same direction; turning 1 face around makes them agree (repair "
+            "orientation)");
   const std::string bowtie =
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n";
   EXPECT_EQ(read_error(bowtie, Mesh_format::obj, Status_code::invalid_mesh, 7),
@@ -721,9 +725,10 @@ TEST(IoInvalidFixtures, EachFileReportsItsProblem) {
       {"non-manifold-vertex.off", Status_code::invalid_mesh, 9,
        "line 9: non-manifold vertex 0: its faces form 2 separate fans that "
        "meet only at this vertex (the faces on lines 8 and 9)"},
-      {"inconsistent-orientation.off", Status_code::invalid_mesh, 8,
+      {"inconsistent-orientation.off", Status_code::inconsistent_orientation, 8,
        "line 8: inconsistent orientation: the faces on lines 7 and 8 both use "
-       "edge 0\u21921 in the same direction"},
+       "edge 0\u21921 in the same direction; turning 1 face around makes "
+       "them agree (repair orientation)"},
       {"extra-data.off", Status_code::parse_error, 10,
        "line 10: extra data after the 3 faces the header declares (header "
        "counts disagree with the data)"},

@@ -488,9 +488,10 @@ TEST(IoSpeedPaths, MessagesAfterARunNameTheRightLine) {
        Mesh_format::obj, Status_code::parse_error, 7,
        "line 7: unknown OBJ statement 'q'"},
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\n", Mesh_format::obj,
-       Status_code::invalid_mesh, 5,
+       Status_code::inconsistent_orientation, 5,
        "line 5: inconsistent orientation: the faces on lines 4 and 5 both "
-       "use edge 1\u21922 in the same direction"},
+       "use edge 1\u21922 in the same direction; turning 1 face around "
+       "makes them agree (repair orientation)"},
   };
   for (const Case& c : cases) {
     for (const bool fast : {true, false}) {

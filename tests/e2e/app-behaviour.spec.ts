@@ -162,7 +162,9 @@ test('after a cancelled step the worker restarts without the levels it kept: the
   await test.step('it exports', async () => {
     await app.byTestId('export-panel').locator('summary').click();
     const off = readFileSync(await (await app.download('export.off')).path(), 'utf8');
-    expect(off.split('\n', 2)[1]).toBe(`${601 * 601} 360000 0`);
+    // Line 2 is the export's comment (model, scheme, level), line 3 the counts.
+    expect(off.split('\n', 3)[1]).toMatch(/^# SubdivLab: .*, level 1$/);
+    expect(off.split('\n', 3)[2]).toBe(`${601 * 601} 360000 0`);
   });
   await test.step('and the next step starts from it', async () => {
     await app.subdivide();

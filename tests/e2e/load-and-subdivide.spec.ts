@@ -182,9 +182,11 @@ test('an invalid file shows a message naming it; the previous mesh and levels st
     expect(await app.page.evaluate(() => (window as unknown as { __pwned?: number }).__pwned)).toBeUndefined();
   });
 
-  await test.step('a file that is neither OFF nor OBJ', async () => {
+  await test.step('a file that is no mesh format', async () => {
     await app.dropFile('notes.txt', 'just some words\n');
-    await expect(app.byTestId('error.message')).toContainText('not an OFF or OBJ file');
+    await expect(app.byTestId('error.message')).toContainText(
+      'This is not a mesh file: no OFF, OBJ, PLY or STL header or statement at its start.',
+    );
   });
 
   await test.step('loading a good file clears the message', async () => {

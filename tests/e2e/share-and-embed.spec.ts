@@ -76,7 +76,7 @@ test('first visit: a sample after two Catmull-Clark steps, with a line on openin
   expect(await app.facts()).toMatchObject({ vertices: 386, edges: 768, faces: 384, faceTypes: '384 quads', genus: 0 });
   const hint = app.byTestId('viewer.first-visit');
   await expect(hint).toHaveText(
-    'A sample to start with: drop an OFF or OBJ file anywhere (or use Open…) to subdivide your own.',
+    'A sample to start with: drop your own OFF, OBJ, PLY or STL file anywhere (or use Open…).',
   );
   await test.step('the hint is one line at 1024 px', async () => {
     const { height, lineHeight } = await hint.evaluate((e) => ({

@@ -136,13 +136,13 @@ describe('subdiv CLI', () => {
     [[fixture('cube.off'), '--levels', 'two']],
     [[fixture('cube.off'), '--scheme', 'butterfly']],
     [[fixture('cube.off'), '--frobnicate']],
-    [[fixture('cube.off'), '-o', join(work || tmpdir(), 'x.stl')]],
+    [[fixture('cube.off'), '-o', join(work || tmpdir(), 'x.fbx')]],
   ])('bad usage %j: exit 2 with the usage', (args) => {
     const r = subdiv(args);
     expect(r.status).toBe(2);
     expect(r.stdout).toBe('');
     expect(r.stderr).toContain(
-      'usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|OUTPUT.obj] [--stats]',
+      'usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|.obj|.ply|.stl] [--stats]',
     );
   });
 

@@ -169,7 +169,9 @@ describe('formatFromFileName', () => {
   it('reads the extension in any case', () => {
     expect(formatFromFileName('bunny.OFF')).toBe('off');
     expect(formatFromFileName('dir/x.obj')).toBe('obj');
-    expect(formatFromFileName('mesh.stl')).toBeNull();
+    expect(formatFromFileName('scan.PLY')).toBe('ply');
+    expect(formatFromFileName('part.stl')).toBe('stl');
+    expect(formatFromFileName('mesh.fbx')).toBeNull();
     expect(formatFromFileName('off')).toBeNull();
   });
 });

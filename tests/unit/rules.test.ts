@@ -352,11 +352,15 @@ describe('subdiv CLI with rules', () => {
     delete b.ms;
     expect(a).toEqual(b);
     expect(a.controlEdges).toBe(48);
-    // --rule alone implies custom; the written meshes are identical.
+    // --rule alone implies custom; the written meshes are identical but for the comment naming the scheme.
     const dir = mkdtempSync(join(tmpdir(), 'subdiv-rules-'));
     run([fixture('icosahedron.off'), '--rule', join(RULES_DIR, 'loop.json'), '-o', join(dir, 'a.off')]);
     run([fixture('icosahedron.off'), '--scheme', 'loop', '-o', join(dir, 'b.off')]);
-    expect(readFileSync(join(dir, 'a.off'), 'utf8')).toBe(readFileSync(join(dir, 'b.off'), 'utf8'));
+    const a2 = readFileSync(join(dir, 'a.off'), 'utf8').split('\n');
+    const b2 = readFileSync(join(dir, 'b.off'), 'utf8').split('\n');
+    expect(a2[1]).toBe('# SubdivLab: icosahedron.off, Custom rules, level 1');
+    expect(b2[1]).toBe('# SubdivLab: icosahedron.off, Loop, level 1');
+    expect([a2[0], ...a2.slice(2)]).toEqual([b2[0], ...b2.slice(2)]);
   });
 
   it('quad-triangle, --fixed-boundary and controlEdges on the CLI', () => {

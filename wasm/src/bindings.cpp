@@ -260,20 +260,41 @@ Status not_text() {
 }
 
 bool parse_format(const std::string& name, Mesh_format& format) {
-  if (name == "off") {
-    format = Mesh_format::off;
-  } else if (name == "obj") {
-    format = Mesh_format::obj;
-  } else {
-    return false;
+  for (const Mesh_format f : {Mesh_format::off, Mesh_format::obj,
+                              Mesh_format::ply, Mesh_format::stl}) {
+    if (name == format_name(f)) {
+      format = f;
+      return true;
+    }
   }
-  return true;
+  return false;
 }
 
 Status unknown_format(const std::string& name) {
-  return Status::error(
-      Status_code::invalid_argument,
-      "Unknown mesh format \"" + name + "\"; expected \"off\" or \"obj\".");
+  return Status::error(Status_code::invalid_argument,
+                       "Unknown mesh format \"" + name +
+                           "\"; expected \"off\", \"obj\", \"ply\" or "
+                           "\"stl\".");
+}
+
+/// The format to read `bytes` as: `name`, or with "auto" the core's guess
+/// from the content (detect_format).
+Status read_format(const std::string& name, std::string_view bytes,
+                   Mesh_format& format) {
+  if (name == "auto") {
+    const Result<Mesh_format> detected = detect_format(bytes);
+    format = detected.value;
+    return detected.status;
+  }
+  return parse_format(name, format) ? Status::success() : unknown_format(name);
+}
+
+/// Read_options of { repairOrientation?: boolean } (undefined: defaults).
+Read_options from_js_read_options(const val& js) {
+  Read_options options;
+  if (js.isUndefined() || js.isNull()) return options;
+  options.repair_orientation = js["repairOrientation"].isTrue();
+  return options;
 }
 
 /// Bytes the heap can still give: the address space left to grow into plus
@@ -441,14 +462,16 @@ val guarded(Body body) {
   }
 }
 
-val js_read_mesh(const val& js_text, const std::string& format_name) {
+val js_read_mesh(const val& js_text, const std::string& format_name,
+                 const val& js_options) {
   return guarded([&] {
-    Mesh_format format;
-    if (!parse_format(format_name, format))
-      return to_js_status(unknown_format(format_name));
     Js_text text;
     if (!from_js_text(js_text, text)) return to_js_status(not_text());
-    const Result<Mesh_buffers> result = read_mesh(text.view(), format);
+    Mesh_format format;
+    const Status known = read_format(format_name, text.view(), format);
+    if (!known.ok()) return to_js_status(known);
+    const Result<Mesh_buffers> result = read_mesh(
+        text.view(), format, nullptr, from_js_read_options(js_options));
     if (!result.ok()) return to_js_status(result.status);
     val out = ok_object();
     out.set("mesh", to_js_mesh(result.value));
@@ -460,7 +483,8 @@ val js_read_mesh(const val& js_text, const std::string& format_name) {
 /// handed to `on_chunk` as a Uint8Array copy; `on_chunk` returns false to
 /// stop (the result is then still ok: the caller knows why it stopped).
 val js_write_mesh(const val& mesh, const std::string& format_name,
-                  double max_chunk_bytes, const val& on_chunk) {
+                  double max_chunk_bytes, const val& on_chunk,
+                  const std::string& comment) {
   return guarded([&] {
     Mesh_format format;
     if (!parse_format(format_name, format))
@@ -475,7 +499,8 @@ val js_write_mesh(const val& mesh, const std::string& format_name,
           const val copy = uint8_array.new_(
               emscripten::typed_memory_view(chunk.size(), chunk.data()));
           return on_chunk(copy).as<bool>();
-        });
+        },
+        comment);
     return ok_object();
   });
 }
@@ -863,16 +888,18 @@ val js_view_mesh(const val& mesh) {
 }
 
 /// { mesh, facts, buffers } of OFF/OBJ text (as read_mesh takes it).
-val js_read_view(const val& js_text, const std::string& format_name) {
+val js_read_view(const val& js_text, const std::string& format_name,
+                 const val& js_options) {
   return guarded([&] {
-    Mesh_format format;
-    if (!parse_format(format_name, format))
-      return to_js_status(unknown_format(format_name));
     Js_text text;
     if (!from_js_text(js_text, text)) return to_js_status(not_text());
+    Mesh_format format;
+    const Status known = read_format(format_name, text.view(), format);
+    if (!known.ok()) return to_js_status(known);
     Mesh_buffers mesh;
     Js_render_sink sink;
-    const Result<Mesh_facts> facts = read_view(text.view(), format, mesh, sink);
+    const Result<Mesh_facts> facts = read_view(
+        text.view(), format, mesh, sink, from_js_read_options(js_options));
     if (!facts.ok()) return to_js_status(facts.status);
     val out = ok_object();
     out.set("mesh", to_js_mesh(mesh));

@@ -5,7 +5,7 @@
  * shortcuts; its state lives in the URL hash (url-state.ts). Every failure
  * ends in {@link AppShell.showError}, the one place errors are shown.
  */
-import type { SchemeName } from '../core/mesh';
+import type { ReadOptions, SchemeName } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
 import { CancelledError } from '../core/worker-client';
@@ -91,7 +91,7 @@ export class AppShell {
   constructor(root: HTMLElement) {
     this.fileInput = el('input', {
       testId: 'open.input',
-      attrs: { type: 'file', accept: '.off,.obj,text/plain', 'aria-label': 'Open a mesh file' },
+      attrs: { type: 'file', accept: '.off,.obj,.ply,.stl,text/plain', 'aria-label': 'Open a mesh file' },
     });
     // The Open… button is the visible, focusable control; the input only opens the picker.
     this.fileInput.hidden = true;
@@ -113,12 +113,12 @@ export class AppShell {
     this.emptyHint = el(
       'div',
       { testId: 'viewer.empty', className: 'empty-hint' },
-      el('p', { text: 'Drop an OFF or OBJ file anywhere, open one, or pick a sample.' }),
+      el('p', { text: 'Drop an OFF, OBJ, PLY or STL file anywhere, open one, or pick a sample.' }),
     );
     this.firstVisitHint = el('p', {
       testId: 'viewer.first-visit',
       className: 'first-visit-hint',
-      text: 'A sample to start with: drop an OFF or OBJ file anywhere (or use Open…) to subdivide your own.',
+      text: 'A sample to start with: drop your own OFF, OBJ, PLY or STL file anywhere (or use Open…).',
     });
     this.firstVisitHint.hidden = true;
     this.viewer = new SubdivViewer(stage, { confirmLargeStep: (info) => this.confirmLargeStep(info) });
@@ -210,7 +210,7 @@ export class AppShell {
       'header',
       { className: 'app-header' },
       el('h1', { text: 'SubdivLab' }),
-      button('Open…', 'open.button', () => this.fileInput.click(), 'Open an OFF or OBJ file (O)'),
+      button('Open…', 'open.button', () => this.fileInput.click(), 'Open an OFF, OBJ, PLY or STL file (O)'),
       this.fileInput,
       createGallery(SAMPLES, (sample) => void this.openUrl(sample.path, sample.path.split('/').pop() ?? sample.id)),
       this.exports.element,
@@ -421,10 +421,15 @@ export class AppShell {
     this.errors.show(where, message, action);
   }
 
-  private async openText(name: string, read: () => Promise<MeshText>, source: ModelSource): Promise<boolean> {
+  private async openText(
+    name: string,
+    read: () => Promise<MeshText>,
+    source: ModelSource,
+    options: ReadOptions = {},
+  ): Promise<boolean> {
     try {
       const mesh = await read();
-      await this.viewer.loadText(mesh.text, mesh.format, mesh.name);
+      await this.viewer.loadText(mesh.text, mesh.format, mesh.name, options);
       if (this.viewer.state.modelName !== mesh.name) return false;
       this.source = source;
       this.firstVisitHint.hidden = true;
@@ -435,7 +440,13 @@ export class AppShell {
       this.showTagNotes(mesh.name);
       return true;
     } catch (error) {
-      this.showError(name, error);
+      // Faces that only disagree: offer to read the file again with CGAL's repair.
+      const repairable = error instanceof SubdivError && error.code === 'inconsistent_orientation';
+      const repair = {
+        label: 'Repair orientation',
+        run: () => void this.openText(name, read, source, { repairOrientation: true }),
+      };
+      this.showError(name, error, repairable ? repair : undefined);
       return false;
     }
   }
@@ -457,14 +468,20 @@ export class AppShell {
 
   /** Names the file's tags that the core reads but does not apply (their lines), or hides such a notice of an earlier file. */
   private showTagNotes(name: string): void {
-    const notes = this.viewer.controlMesh?.tags?.notes ?? [];
-    if (notes.length > 0) {
+    const all = this.viewer.controlMesh?.tags?.notes ?? [];
+    // Notes on the file as a whole (a repair, dropped slivers) are said as they are; the rest are on tags.
+    const isGeneral = (note: string) => /^(orientation repaired:|\d+ degenerate triangles? )/.test(note);
+    const general = all.filter(isGeneral);
+    const notes = all.filter((note) => !isGeneral(note));
+    if (general.length > 0) {
+      this.notice.show(`${name}: ${general.join('; ')}.`);
+    } else if (notes.length > 0) {
       const more = notes.length > 3 ? `; and ${notes.length - 3} more` : '';
       this.notice.show(`${name} loaded without some of its tags: ${notes.slice(0, 3).join('; ')}${more}.`);
     } else if (this.tagNotice) {
       this.notice.hide();
     }
-    this.tagNotice = notes.length > 0;
+    this.tagNotice = all.length > 0;
   }
 
   /** Chooses a scheme for a link (which then steps to its own level): the levels of the previous one are dropped. */

@@ -1,12 +1,13 @@
 /**
  * What the Export menu and Ctrl+C do: PNG (side by side, every pane), SVG,
- * OFF/OBJ downloads named after model, scheme and level, and the view as a
- * PNG on the clipboard. Failures
+ * OFF/OBJ/PLY/STL downloads named after model, scheme and level (and saying
+ * so in a comment inside), and the view as a PNG on the clipboard. Failures
  * go to the shell's one error display.
  */
+import type { MeshFormat } from '../core/mesh';
 import { pictureGrid } from '../render/picture-grid';
 import { saveBlob } from '../ui/save-blob';
-import { exportFileName } from '../viewer/file-names';
+import { exportComment, exportFileName } from '../viewer/file-names';
 import { schemeInfo } from '../viewer/scheme-info';
 import type { SubdivViewer } from '../viewer/subdiv-viewer';
 
@@ -88,9 +89,11 @@ export class ExportActions {
     }
   }
 
-  async mesh(format: 'off' | 'obj'): Promise<void> {
+  async mesh(format: MeshFormat): Promise<void> {
     try {
-      saveBlob(await this.viewer.exportMesh(format), this.fileName(format));
+      const s = this.viewer.state;
+      const comment = exportComment(s.modelName, schemeInfo(s.scheme).label, s.level);
+      saveBlob(await this.viewer.exportMesh(format, comment), this.fileName(format));
     } catch (error) {
       this.showError(this.fileName(format), error);
     }

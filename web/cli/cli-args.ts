@@ -2,9 +2,10 @@ import { parseArgs } from 'node:util';
 import type { BoundaryInterpolation, CreaseMethod, MeshFormat } from '../core/mesh';
 
 /** The usage text printed by --help and on bad usage. */
-export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|OUTPUT.obj] [--stats]
+export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|.obj|.ply|.stl] [--stats]
               [--rule RULES.json] [--fixed-boundary] [--crease-method M] [--boundary B]
-       subdiv info INPUT
+              [--repair-orientation]
+       subdiv info INPUT [--repair-orientation]
        subdiv stencil INPUT --level K --vertex I [--scheme S] [--triangulate] [--rule RULES.json] ...
        subdiv check CONTROL RESULT [--scheme S] [--levels K] [--tolerance T] [--triangulate] ...
        subdiv compare A B
@@ -12,7 +13,8 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
                      [--scheme S --levels K] ...
        subdiv halfedges INPUT [--scheme S --levels K] ...
 
-  INPUT            an OFF or OBJ mesh (format from the extension; otherwise from the content)
+  INPUT            an OFF, OBJ, PLY or STL mesh (format from the extension; otherwise from the
+                   content; ASCII and binary PLY and STL, STL corners welded by exact position)
   --scheme S       catmull-clark (default), loop, doo-sabin, sqrt3, quad-triangle, linear,
                    linear-tri or custom
   --levels N       number of subdivision steps, 0 or more (default 1; 0 = load, check, convert)
@@ -25,7 +27,12 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
                    t creasemethod tag)
   --boundary B     edge, edge-and-corner or none: how a tagged mesh's border is subdivided
                    (overrides the file's t interpolateboundary tag)
-  -o, --output F   write the result to F, as OFF or OBJ by its extension
+  -o, --output F   write the result to F, as OFF, OBJ, PLY (ASCII) or STL (binary, polygons
+                   as triangle fans) by its extension, with a comment naming input, scheme
+                   and level
+  --repair-orientation  turn faces that disagree with their neighbours (CGAL's polygon-soup
+                   orientation) instead of refusing the mesh; a non-orientable one is still
+                   refused
   --stats          print the result's facts and the subdivision time as one JSON object
                    (with controlEdges, the marked control-mesh edges, for primal schemes)
   -h, --help       show this text
@@ -89,6 +96,8 @@ export interface CliArgs {
   /** check: the result to check (input is the control mesh), and --tolerance. */
   result: string;
   tolerance: number;
+  /** --repair-orientation: faces turned to agree when they only disagree. */
+  repairOrientation: boolean;
   /** inspect: what to compute besides the measures. */
   inspect: { selfIntersections: boolean; sphere: boolean; hull: boolean; width: boolean };
   help: boolean;
@@ -103,8 +112,8 @@ export class UsageError extends Error {
 }
 
 function outputFormat(path: string): MeshFormat {
-  const match = /\.(off|obj)$/i.exec(path);
-  if (!match) throw new UsageError(`output file ${path} must end in .off or .obj`);
+  const match = /\.(off|obj|ply|stl)$/i.exec(path);
+  if (!match) throw new UsageError(`output file ${path} must end in .off, .obj, .ply or .stl`);
   return match[1].toLowerCase() as MeshFormat;
 }
 
@@ -125,6 +134,7 @@ const NO_OPTIONS = {
   result: '',
   tolerance: DEFAULT_TOLERANCE,
   inspect: { selfIntersections: false, sphere: false, hull: false, width: false },
+  repairOrientation: false,
 } as const satisfies Partial<CliArgs>;
 
 /** Parses argv (without node and the script). Throws UsageError; scheme names are checked later. */
@@ -204,6 +214,7 @@ export function parseCliArgs(argv: string[]): CliArgs {
     boundary: boundary as BoundaryInterpolation | null,
     output: values.output === undefined ? null : { path: values.output, format: outputFormat(values.output) },
     stats: values.stats === true,
+    repairOrientation: values['repair-orientation'] === true,
     vertex,
     inspect: {
       selfIntersections: wants('self-intersections'),
@@ -235,12 +246,19 @@ function compareArgs({ values, positionals }: ReturnType<typeof parse>): CliArgs
   return { ...NO_OPTIONS, command: 'compare', input: positionals[1], result: positionals[2], scheme: '', help: false };
 }
 
-/** `subdiv info INPUT`: one file and no options (they are subdividing's). */
+/** `subdiv info INPUT`: one file and no options but --repair-orientation (the others are subdividing's). */
 function infoArgs({ values, positionals }: ReturnType<typeof parse>): CliArgs {
   if (positionals.length !== 2) throw new UsageError('subdiv info takes exactly one INPUT file');
-  const given = Object.keys(values);
+  const given = Object.keys(values).filter((name) => name !== 'repair-orientation');
   if (given.length > 0) throw new UsageError(`subdiv info takes no options, not --${given[0]}`);
-  return { ...NO_OPTIONS, command: 'info', input: positionals[1], scheme: 'catmull-clark', help: false };
+  return {
+    ...NO_OPTIONS,
+    command: 'info',
+    input: positionals[1],
+    scheme: 'catmull-clark',
+    help: false,
+    repairOrientation: values['repair-orientation'] === true,
+  };
 }
 
 function parse(argv: string[]) {
@@ -261,6 +279,7 @@ function parse(argv: string[]) {
       boundary: { type: 'string' },
       output: { type: 'string', short: 'o' },
       stats: { type: 'boolean' },
+      'repair-orientation': { type: 'boolean' },
       'self-intersections': { type: 'boolean' },
       sphere: { type: 'boolean' },
       hull: { type: 'boolean' },

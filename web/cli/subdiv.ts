@@ -1,13 +1,15 @@
 /**
- * The `subdiv` command: load an OFF/OBJ mesh, subdivide it with the WASM core,
+ * The `subdiv` command: load an OFF/OBJ/PLY/STL mesh, subdivide it with the WASM core,
  * write it and/or print its facts. Bundled for Node into build/cli/subdiv.mjs
  * (vite.cli.config.ts) and started by bin/subdiv.mjs.
  */
 import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
+import { basename } from 'node:path';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
-import type { Mesh, MeshFacts, MeshFormat, SchemeName, SubdivideOptions } from '../core/mesh';
+import type { Mesh, MeshFacts, MeshFormat, ReadFormat, ReadOptions, SchemeName, SubdivideOptions } from '../core/mesh';
 import { parseRuleSetText, type RuleSet } from '../core/rule-set';
+import { SCHEME_TABLE } from '../core/scheme-table';
 import { fraction, vertexStencil } from '../core/stencils';
 import {
   compareMeshes,
@@ -41,20 +43,28 @@ const processIo: CliIo = {
 /** Bad input: reported as one `error:` line, exit status 1. */
 class InputError extends Error {}
 
-/** OFF/OBJ by extension; other names are told apart by an OFF header on the first data line. */
-function inputFormat(path: string, text: string): MeshFormat {
-  const byName = formatFromFileName(path);
-  if (byName) return byName;
-  const firstLine = text
-    .replace(/^\uFEFF/, '')
-    .split(/\r?\n/)
-    .find((line) => line.trim() !== '' && !line.trim().startsWith('#'));
-  return firstLine && /^\s*[A-Z]*OFF\b/.test(firstLine) ? 'off' : 'obj';
+/** OFF/OBJ/PLY/STL by extension; other names the core tells apart by their first bytes ('auto'). */
+function inputFormat(path: string): ReadFormat {
+  return formatFromFileName(path) ?? 'auto';
+}
+
+/** --repair-orientation as the core takes it. */
+function readOptions(args: CliArgs): ReadOptions {
+  return { repairOrientation: args.repairOrientation };
+}
+
+/** A mesh file's bytes (binary PLY and STL are not text). */
+function readMeshFile(path: string): Uint8Array {
+  return readFile(path);
 }
 
 function readInput(path: string): string {
+  return new TextDecoder().decode(readFile(path));
+}
+
+function readFile(path: string): Uint8Array {
   try {
-    return readFileSync(path, 'utf8');
+    return readFileSync(path);
   } catch (error) {
     const reason = (error as NodeJS.ErrnoException).code === 'ENOENT' ? 'no such file' : (error as Error).message;
     throw new InputError(`${path}: cannot read: ${reason}`);
@@ -68,13 +78,25 @@ function locate(path: string, error: SubdivError): string {
   return `${path}: ${error.message}`;
 }
 
-/** Writes the mesh's text to `path` as the core produces it, without ever holding it whole. */
-function writeMeshFile(path: string, mesh: Mesh, format: MeshFormat): void {
+/** The comment an output file carries: `SubdivLab: cube.off, Loop, level 2`. */
+function outputComment(args: CliArgs): string {
+  const label = SCHEME_TABLE.schemes.find((s) => s.name === args.scheme)?.label ?? args.scheme;
+  return `SubdivLab: ${basename(args.input)}, ${label}, level ${args.levels}`;
+}
+
+/** Writes the mesh's file to `path` as the core produces it, without ever holding it whole. */
+function writeMeshFile(path: string, mesh: Mesh, format: MeshFormat, comment: string): void {
   const fd = openSync(path, 'w');
   try {
-    writeMesh(mesh, format, (chunk) => {
-      for (let done = 0; done < chunk.length; ) done += writeSync(fd, chunk, done);
-    });
+    writeMesh(
+      mesh,
+      format,
+      (chunk) => {
+        for (let done = 0; done < chunk.length; ) done += writeSync(fd, chunk, done);
+      },
+      undefined,
+      comment,
+    );
   } finally {
     closeSync(fd);
   }
@@ -107,9 +129,9 @@ export function infoText(mesh: Mesh, facts: MeshFacts): string {
 
 async function info(args: CliArgs, io: CliIo): Promise<void> {
   await initNode();
-  const text = readInput(args.input);
+  const text = readMeshFile(args.input);
   try {
-    const mesh = parseMesh(text, inputFormat(args.input, text));
+    const mesh = parseMesh(text, inputFormat(args.input), readOptions(args));
     io.stdout(infoText(mesh, meshFacts(mesh)));
   } catch (error) {
     if (error instanceof SubdivError) throw new InputError(locate(args.input, error));
@@ -157,9 +179,9 @@ function inputError(args: CliArgs, error: unknown): unknown {
  * level K - 1's vertices, with its kind, size and formula, as JSON.
  */
 async function stencil(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
-  const text = readInput(args.input);
+  const text = readMeshFile(args.input);
   try {
-    const mesh = parseMesh(text, inputFormat(args.input, text));
+    const mesh = parseMesh(text, inputFormat(args.input), readOptions(args));
     const options = subdivideOptions(args, rules);
     const table = stepStencils(mesh, options);
     const count = table.kinds.length;
@@ -197,11 +219,11 @@ async function stencil(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Pr
  * JSON (the hull's and pairs' arrays as counts and the first pairs).
  */
 async function inspect(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
-  const text = readInput(args.input);
+  const text = readMeshFile(args.input);
   let control: Mesh;
   let mesh: Mesh;
   try {
-    control = parseMesh(text, inputFormat(args.input, text));
+    control = parseMesh(text, inputFormat(args.input), readOptions(args));
     mesh = args.levels > 0 ? subdivide(control, subdivideOptions(args, rules)) : control;
   } catch (error) {
     throw inputError(args, error);
@@ -262,17 +284,20 @@ class Mismatch extends Error {}
  * as JSON; a mismatch ends with exit status 1.
  */
 async function check(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
-  const controlText = readInput(args.input);
-  const resultText = readInput(args.result);
+  const controlText = readMeshFile(args.input);
+  const resultText = readMeshFile(args.result);
   let reference: Mesh;
   try {
-    reference = subdivide(parseMesh(controlText, inputFormat(args.input, controlText)), subdivideOptions(args, rules));
+    reference = subdivide(
+      parseMesh(controlText, inputFormat(args.input), readOptions(args)),
+      subdivideOptions(args, rules),
+    );
   } catch (error) {
     throw inputError(args, error);
   }
   let result: Mesh;
   try {
-    result = parseMesh(resultText, inputFormat(args.result, resultText));
+    result = parseMesh(resultText, inputFormat(args.result), readOptions(args));
   } catch (error) {
     if (error instanceof SubdivError) throw new InputError(locate(args.result, error));
     throw error;
@@ -307,9 +332,9 @@ async function check(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Prom
 async function compare(args: CliArgs, io: CliIo): Promise<void> {
   await initNode();
   const meshes = [args.input, args.result].map((path) => {
-    const text = readInput(path);
+    const text = readMeshFile(path);
     try {
-      return parseMesh(text, inputFormat(path, text));
+      return parseMesh(text, inputFormat(path), readOptions(args));
     } catch (error) {
       if (error instanceof SubdivError) throw new InputError(locate(path, error));
       throw error;
@@ -327,9 +352,9 @@ async function compare(args: CliArgs, io: CliIo): Promise<void> {
 
 /** `subdiv halfedges`: the halfedge table of the mesh or its level K, as JSON (halfedge-json.ts). */
 async function halfedges(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
-  const text = readInput(args.input);
+  const text = readMeshFile(args.input);
   try {
-    const control = parseMesh(text, inputFormat(args.input, text));
+    const control = parseMesh(text, inputFormat(args.input), readOptions(args));
     const mesh = args.levels > 0 ? subdivide(control, subdivideOptions(args, rules)) : control;
     const header = {
       ...(args.levels > 0 ? { scheme: args.scheme, levels: args.levels } : {}),
@@ -355,11 +380,11 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'check') return check(args, io, rules);
   if (args.command === 'inspect') return inspect(args, io, rules);
   if (args.command === 'halfedges') return halfedges(args, io, rules);
-  const text = readInput(args.input);
+  const text = readMeshFile(args.input);
   let result: Mesh;
   let ms: number;
   try {
-    const mesh = parseMesh(text, inputFormat(args.input, text));
+    const mesh = parseMesh(text, inputFormat(args.input), readOptions(args));
     const start = performance.now();
     result = subdivide(mesh, subdivideOptions(args, rules));
     ms = performance.now() - start;
@@ -368,7 +393,7 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   }
   if (args.output) {
     try {
-      writeMeshFile(args.output.path, result, args.output.format);
+      writeMeshFile(args.output.path, result, args.output.format, outputComment(args));
     } catch (error) {
       if (error instanceof SubdivError) throw new InputError(locate(args.output.path, error));
       throw new InputError(`${args.output.path}: cannot write: ${(error as Error).message}`);

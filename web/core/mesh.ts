@@ -55,7 +55,20 @@ export interface MeshTags {
 /** OpenSubdiv's infinite sharpness: a crease or corner of 10 and above never decays. */
 export const INFINITELY_SHARP = 10;
 
-export type MeshFormat = 'off' | 'obj';
+/** The formats the core reads and writes (PLY written as ASCII, STL as binary). */
+export type MeshFormat = 'off' | 'obj' | 'ply' | 'stl';
+/** A format to read as: one of them, or `'auto'` for the core's guess from the bytes. */
+export type ReadFormat = MeshFormat | 'auto';
+
+/** Choices when reading a file. */
+export interface ReadOptions {
+  /**
+   * Faces turned inconsistently on an orientable surface (the error
+   * `inconsistent_orientation`) are turned to agree (CGAL's polygon-soup
+   * orientation); a non-orientable surface is still refused.
+   */
+  repairOrientation?: boolean;
+}
 
 /** CGAL's four schemes (issue 2). */
 export type CgalSchemeName = 'catmull-clark' | 'loop' | 'doo-sabin' | 'sqrt3';

@@ -12,7 +12,17 @@ import type { VertexCurvature } from './curvature';
 import createSubdivModule from './generated/subdivlab.mjs';
 import type { EulerOperator, EulerResult, HalfedgeTable, Sqrt3Walk } from './halfedges';
 import type { Inspection, InspectOptions } from './inspect';
-import type { LevelView, Mesh, MeshFacts, MeshFormat, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
+import type {
+  LevelView,
+  Mesh,
+  MeshFacts,
+  MeshFormat,
+  ReadFormat,
+  ReadOptions,
+  RenderBuffers,
+  SizePrediction,
+  SubdivideOptions,
+} from './mesh';
 import { type CompiledRules, type CompileLimits, compileLimitsFor, compileRuleSet, type RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
 import { SubdivError, type SubdivErrorCode } from './subdiv-error';
@@ -35,12 +45,13 @@ type RawResult<T> = ({ ok: true } & T) | RawFailure;
 /** What bindings.cpp registers; every call returns a result object, never throws. */
 interface CoreModule {
   /** A string or its UTF-8 bytes: bindings.cpp has the engine write them into the heap (encodeInto, set). */
-  read_mesh(text: string | Uint8Array, format: string): RawResult<{ mesh: Mesh }>;
+  read_mesh(text: string | Uint8Array, format: string, options: ReadOptions): RawResult<{ mesh: Mesh }>;
   write_mesh(
     mesh: Mesh,
     format: string,
     maxChunkBytes: number,
     onChunk: (chunk: Uint8Array) => boolean,
+    comment: string,
   ): RawResult<object>;
   subdivide(mesh: Mesh, options: CoreOptions): RawResult<{ mesh: Mesh }>;
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
@@ -61,7 +72,7 @@ interface CoreModule {
   vertex_curvature(mesh: Mesh): RawResult<VertexCurvature>;
   facts(mesh: Mesh): RawResult<{ facts: MeshFacts }>;
   view_mesh(mesh: Mesh): RawResult<{ facts: MeshFacts; buffers: RenderBuffers }>;
-  read_view(text: string | Uint8Array, format: string): RawResult<LevelView>;
+  read_view(text: string | Uint8Array, format: string, options: ReadOptions): RawResult<LevelView>;
   subdivide_view(mesh: Mesh, options: CoreOptions, parent: MeshFacts): RawResult<LevelView>;
   scheme_names(): RawResult<{ names: string[] }>;
   scheme_info(): RawResult<CoreSchemeInfo>;
@@ -143,13 +154,15 @@ function unwrap<T>(result: RawResult<T>): T {
 }
 
 /**
- * Parses OFF or OBJ text, or its UTF-8 bytes, into a checked mesh (a valid
- * oriented 2-manifold polygon mesh). OpenSubdiv's tag lines (OBJ `t ...`,
- * OFF `# t ...` after the faces) come back as `mesh.tags`, absent when the
- * file has none; a malformed tag is a `parse_error` on its line.
+ * Parses an OFF, OBJ, PLY or STL file (text or bytes; `'auto'`: the format
+ * from the content) into a checked mesh (a valid oriented 2-manifold
+ * polygon mesh). OpenSubdiv's tag lines (OBJ `t ...`, OFF `# t ...` after
+ * the faces) come back as `mesh.tags`, absent when the file has none; a
+ * malformed tag is a `parse_error` on its line. A file of another kind
+ * (PNG, PDF, ZIP ...) is a `parse_error` saying what it is.
  */
-export function parseMesh(text: string | Uint8Array, format: MeshFormat): Mesh {
-  return unwrap(module().read_mesh(text, format)).mesh;
+export function parseMesh(text: string | Uint8Array, format: ReadFormat, options: ReadOptions = {}): Mesh {
+  return unwrap(module().read_mesh(text, format, options)).mesh;
 }
 
 /**
@@ -157,8 +170,8 @@ export function parseMesh(text: string | Uint8Array, format: MeshFormat): Mesh {
  * buffers ({@link viewMesh}): what a viewer shows of a loaded file, with the
  * mesh checked once.
  */
-export function parseForView(text: string | Uint8Array, format: MeshFormat): LevelView {
-  const { mesh, facts, buffers } = unwrap(module().read_view(text, format));
+export function parseForView(text: string | Uint8Array, format: ReadFormat, options: ReadOptions = {}): LevelView {
+  const { mesh, facts, buffers } = unwrap(module().read_view(text, format, options));
   return { mesh, facts, buffers };
 }
 
@@ -169,18 +182,22 @@ export const MIN_CHUNK_BYTES = 64;
 export const MAX_CHUNK_BYTES = 1 << 28;
 
 /**
- * Writes `mesh` as OFF or OBJ text in consecutive pieces of at most
+ * Writes `mesh` as OFF, OBJ or PLY text or binary STL in consecutive pieces of at most
  * `chunkBytes` bytes, each handed to `onChunk` as soon as it is written
  * (ASCII bytes, a copy the caller owns; a piece may end inside a line). The
  * pieces joined are {@link exportMesh}'s text, so a text too large for one
- * string can go to a Blob or a file. Coordinates round-trip exactly. An
- * error thrown by `onChunk` stops the writing and is rethrown.
+ * string can go to a Blob or a file. Coordinates round-trip exactly (STL:
+ * as floats, polygons as fans). An error thrown by `onChunk` stops the
+ * writing and is rethrown. A `comment` (e.g. `SubdivLab: cube.off, Loop,
+ * level 2`) goes in as the format's comment: `# ...` in OFF (after its
+ * first line) and OBJ, `comment ...` in PLY, STL's 80-byte header.
  */
 export function writeMesh(
   mesh: Mesh,
   format: MeshFormat,
   onChunk: (chunk: Uint8Array) => void,
   chunkBytes: number = DEFAULT_CHUNK_BYTES,
+  comment = '',
 ): void {
   if (!Number.isInteger(chunkBytes) || chunkBytes < MIN_CHUNK_BYTES || chunkBytes > MAX_CHUNK_BYTES) {
     throw new SubdivError(
@@ -189,23 +206,29 @@ export function writeMesh(
     );
   }
   let stopped: { error: unknown } | null = null;
-  const result = module().write_mesh(mesh, format, chunkBytes, (chunk) => {
-    try {
-      onChunk(chunk);
-      return true;
-    } catch (error) {
-      stopped = { error };
-      return false;
-    }
-  });
+  const result = module().write_mesh(
+    mesh,
+    format,
+    chunkBytes,
+    (chunk) => {
+      try {
+        onChunk(chunk);
+        return true;
+      } catch (error) {
+        stopped = { error };
+        return false;
+      }
+    },
+    comment,
+  );
   unwrap(result);
   if (stopped) throw (stopped as { error: unknown }).error;
 }
 
 /** The pieces of {@link writeMesh}, collected: what an export saves as a Blob. */
-export function exportMeshChunks(mesh: Mesh, format: MeshFormat, chunkBytes?: number): Uint8Array[] {
+export function exportMeshChunks(mesh: Mesh, format: MeshFormat, chunkBytes?: number, comment = ''): Uint8Array[] {
   const chunks: Uint8Array[] = [];
-  writeMesh(mesh, format, (chunk) => chunks.push(chunk), chunkBytes);
+  writeMesh(mesh, format, (chunk) => chunks.push(chunk), chunkBytes, comment);
   return chunks;
 }
 
@@ -458,8 +481,8 @@ function testHook<K extends 'heap_in_use' | 'throw_for_test'>(name: K): NonNulla
   return hook.bind(module()) as NonNullable<CoreModule[K]>;
 }
 
-/** `'off'` or `'obj'` from a file name's extension (any case), otherwise null. */
+/** `'off'`, `'obj'`, `'ply'` or `'stl'` from a file name's extension (any case), otherwise null. */
 export function formatFromFileName(name: string): MeshFormat | null {
-  const match = /\.(off|obj)$/i.exec(name.trim());
+  const match = /\.(off|obj|ply|stl)$/i.exec(name.trim());
   return match ? (match[1].toLowerCase() as MeshFormat) : null;
 }

@@ -2,6 +2,8 @@
 export type SubdivErrorCode =
   | 'parse_error'
   | 'invalid_mesh'
+  /** An orientable mesh whose faces disagree: reading with `repairOrientation` turns them. */
+  | 'inconsistent_orientation'
   | 'not_triangles'
   | 'too_large'
   | 'invalid_argument'

@@ -136,9 +136,9 @@ const handlers: Handlers = {
     epoch = given;
     return { value: schemeNames(), transfer: [] };
   },
-  async parse({ text, format }) {
+  async parse({ text, format, options }) {
     await init();
-    const { mesh, facts, buffers } = parseForView(text, format);
+    const { mesh, facts, buffers } = parseForView(text, format, options);
     const level = levelData({ mesh, facts, orientation: orientation(mesh, facts) }, buffers, 0);
     const copy = copyOf(mesh);
     return { value: { level, mesh: copy }, transfer: [...buffersOf(level), ...meshBuffers(copy)] };
@@ -200,10 +200,10 @@ const handlers: Handlers = {
     await init();
     return { value: predictSize(keptLevel(handle).mesh, options), transfer: [] };
   },
-  async export({ handle, format }) {
+  async export({ handle, format, comment }) {
     await init();
     // Each piece owns its buffer (copied out of the heap), so all can be transferred.
-    const chunks = exportMeshChunks(keptLevel(handle).mesh, format);
+    const chunks = exportMeshChunks(keptLevel(handle).mesh, format, undefined, comment);
     return { value: chunks, transfer: chunks.map((c) => c.buffer) };
   },
   async mesh({ handle }) {

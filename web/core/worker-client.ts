@@ -12,7 +12,7 @@ import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
 import type { VertexCurvature } from './curvature';
 import type { Inspection, InspectOptions } from './inspect';
-import type { Mesh, MeshFacts, MeshFormat, SizePrediction, SubdivideOptions } from './mesh';
+import type { Mesh, MeshFacts, MeshFormat, ReadFormat, ReadOptions, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
 import type { HausdorffDistance } from './subdiv-core';
@@ -282,9 +282,13 @@ export class CoreSession {
     return this.client.ready();
   }
 
-  /** Parses OFF/OBJ text into a level 0 kept by the worker; answers it and its mesh. */
-  parse(text: string, format: MeshFormat): Promise<{ level: LevelData; mesh: Mesh }> {
-    return this.client.request(this, 'parse', { text, format });
+  /** Parses an OFF/OBJ/PLY/STL file (text or bytes) into a level 0 kept by the worker; answers it and its mesh. */
+  parse(
+    text: string | Uint8Array,
+    format: ReadFormat,
+    options: ReadOptions = {},
+  ): Promise<{ level: LevelData; mesh: Mesh }> {
+    return this.client.request(this, 'parse', { text, format, options });
   }
 
   /** Keeps a mesh built elsewhere as a level 0: its handle, facts and render buffers. */
@@ -337,7 +341,12 @@ export class CoreSession {
     return this.client.request(this, 'inspect', { handle, options });
   }
 
-  compare(handle: LevelHandle, text: string, format: MeshFormat, tolerance: number): Promise<MeshComparison> {
+  compare(
+    handle: LevelHandle,
+    text: string | Uint8Array,
+    format: ReadFormat,
+    tolerance: number,
+  ): Promise<MeshComparison> {
     return this.client.request(this, 'compare', { handle, text, format, tolerance });
   }
 
@@ -346,9 +355,9 @@ export class CoreSession {
     return this.client.request(this, 'predict', { handle, options });
   }
 
-  /** OFF or OBJ text of a kept level, in pieces (see writeMesh) to join into a Blob or a file. */
-  exportMesh(handle: LevelHandle, format: MeshFormat): Promise<Uint8Array[]> {
-    return this.client.request(this, 'export', { handle, format });
+  /** The file of a kept level (OFF/OBJ/PLY text, binary STL; `comment` in it), in pieces (see writeMesh) to join into a Blob or a file. */
+  exportMesh(handle: LevelHandle, format: MeshFormat, comment = ''): Promise<Uint8Array[]> {
+    return this.client.request(this, 'export', { handle, format, comment });
   }
 
   /** A copy of a kept level's mesh. */

@@ -9,7 +9,17 @@ import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
 import type { VertexCurvature } from './curvature';
 import type { Inspection, InspectOptions } from './inspect';
-import type { Mesh, MeshFacts, MeshFormat, MeshTags, RenderBuffers, SizePrediction, SubdivideOptions } from './mesh';
+import type {
+  Mesh,
+  MeshFacts,
+  MeshFormat,
+  MeshTags,
+  ReadFormat,
+  ReadOptions,
+  RenderBuffers,
+  SizePrediction,
+  SubdivideOptions,
+} from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
 import type { HausdorffDistance } from './subdiv-core';
@@ -47,8 +57,11 @@ export interface LevelData {
 export interface WorkerRequests {
   /** Loads the WASM core (from the page's compiled module when given); answers the scheme names. */
   init: { args: { module?: WebAssembly.Module | null; epoch: number }; result: string[] };
-  /** Parses OFF/OBJ text into a kept level 0; answers it with its mesh (the page keeps level 0 to restore it). */
-  parse: { args: { text: string; format: MeshFormat }; result: { level: LevelData; mesh: Mesh } };
+  /** Parses an OFF/OBJ/PLY/STL file (text or bytes) into a kept level 0; answers it with its mesh (the page keeps level 0 to restore it). */
+  parse: {
+    args: { text: string | Uint8Array; format: ReadFormat; options?: ReadOptions };
+    result: { level: LevelData; mesh: Mesh };
+  };
   /** Keeps a mesh the page already has as a level 0, with its facts and render buffers. */
   prepare: { args: { mesh: Mesh }; result: LevelData };
   /** Keeps a mesh again whose facts the page has (after the worker restarted); answers its handle. */
@@ -63,7 +76,7 @@ export interface WorkerRequests {
   points: { args: { handle: LevelHandle; options: SubdivideOptions }; result: Float32Array };
   /** Parses a result (OFF/OBJ text) and checks it against a kept level (compare.ts). */
   compare: {
-    args: { handle: LevelHandle; text: string; format: MeshFormat; tolerance: number };
+    args: { handle: LevelHandle; text: string | Uint8Array; format: ReadFormat; tolerance: number };
     result: MeshComparison;
   };
   /** The symmetric Hausdorff distance between two kept levels, with each vertex's distance to the other surface. */
@@ -74,8 +87,8 @@ export interface WorkerRequests {
   curvature: { args: { handle: LevelHandle }; result: VertexCurvature };
   /** Predicted counts and peak bytes of a step from a kept level, without subdividing. */
   predict: { args: { handle: LevelHandle; options: SubdivideOptions }; result: SizePrediction };
-  /** OFF/OBJ text of a kept level, as the pieces of writeMesh (transferred; a text may exceed one string's limit). */
-  export: { args: { handle: LevelHandle; format: MeshFormat }; result: Uint8Array[] };
+  /** The file of a kept level (OFF/OBJ/PLY text, binary STL) with `comment` in it, as the pieces of writeMesh (transferred; a file may exceed one string's limit). */
+  export: { args: { handle: LevelHandle; format: MeshFormat; comment?: string }; result: Uint8Array[] };
   /** A copy of a kept level's mesh. */
   mesh: { args: { handle: LevelHandle }; result: Mesh };
   /** Forgets kept levels (handles of an earlier worker are ignored). */

@@ -15,7 +15,7 @@ export class DropZone {
     this.element = el(
       'div',
       { testId: 'dropzone', className: 'drop-zone', attrs: { 'aria-hidden': 'true' } },
-      el('div', { className: 'drop-zone-label', text: 'Drop an OFF or OBJ file to open it' }),
+      el('div', { className: 'drop-zone-label', text: 'Drop an OFF, OBJ, PLY or STL file to open it' }),
     );
     this.element.hidden = true;
     target.addEventListener('dragenter', this.onDragEnter as EventListener);

@@ -1,4 +1,5 @@
-/** Export: PNG (×1/×2/×4, optional transparent background), copy image, SVG, OFF, OBJ. */
+/** Export: PNG (×1/×2/×4, optional transparent background), copy image, SVG, OFF, OBJ, PLY, STL. */
+import type { MeshFormat } from '../core/mesh';
 import type { ViewerState } from '../viewer/subdiv-viewer';
 import { button, dropdown, el, uniqueId } from './dom';
 
@@ -6,7 +7,7 @@ export interface ExportPanelHandlers {
   onPng: (scale: number, transparent: boolean) => void;
   onCopy: (transparent: boolean) => void;
   onSvg: (transparent: boolean) => void;
-  onMesh: (format: 'off' | 'obj') => void;
+  onMesh: (format: MeshFormat) => void;
 }
 
 export class ExportPanel {
@@ -33,6 +34,8 @@ export class ExportPanel {
       button('SVG', 'export.svg', () => handlers.onSvg(transparent()), 'Save the view as SVG (polygons)'),
       button('OFF', 'export.off', () => handlers.onMesh('off'), 'Save the shown level as OFF'),
       button('OBJ', 'export.obj', () => handlers.onMesh('obj'), 'Save the shown level as OBJ'),
+      button('PLY', 'export.ply', () => handlers.onMesh('ply'), 'Save the shown level as PLY (ASCII)'),
+      button('STL', 'export.stl', () => handlers.onMesh('stl'), 'Save the shown level as STL (binary, triangles)'),
     ];
     this.buttons[1].setAttribute('aria-keyshortcuts', 'Control+C');
     this.element = dropdown(

@@ -1,10 +1,12 @@
 /**
- * Where mesh text comes from: a dropped or picked File, a gallery sample, or
- * `?src=URL`. Each returns the text and the name shown to the user; each
- * refuses what it should not read (wrong scheme, too large) with an Error
- * whose message says why.
+ * Where a mesh file comes from: a dropped or picked File, a gallery sample,
+ * or `?src=URL`. Each returns the file's bytes (binary PLY and STL are not
+ * text) and the name shown to the user; each refuses what it should not
+ * read (wrong scheme, too large) with an Error whose message says why. What
+ * the bytes are (a mesh format, or a PNG dropped by mistake) the core says:
+ * it reads them anyway, and the CLI gets the same words.
  */
-import type { MeshFormat } from '../core/mesh';
+import type { ReadFormat } from '../core/mesh';
 import { CancelledError } from '../core/worker-client';
 
 /** Largest file the app reads: the core's heap ends at 4 GB and text is about 3× the mesh. */
@@ -15,8 +17,9 @@ export const MAX_URL_BYTES = 64 * 1024 * 1024;
 export interface MeshText {
   /** File name shown to the user and used in export names. */
   name: string;
-  text: string;
-  format: MeshFormat;
+  /** The file: bytes as read, or a string (a caller's OFF/OBJ text). */
+  text: string | Uint8Array;
+  format: ReadFormat;
 }
 
 /** A load failure that names its source (file name or URL). */
@@ -30,25 +33,18 @@ export class LoadError extends Error {
   }
 }
 
-/** OFF or OBJ from the extension, else from the first meaningful line; null when neither fits. */
-export function detectFormat(name: string, text: string): MeshFormat | null {
-  const ext = /\.(off|obj)$/i.exec(name.trim());
-  if (ext) return ext[1].toLowerCase() as MeshFormat;
-  for (const raw of text.slice(0, 4096).split(/\r?\n/)) {
-    const line = raw.replace(/^\uFEFF/, '').trim();
-    if (line === '' || line.startsWith('#')) continue;
-    if (/^[ST]?C?N?4?n?OFF\b/.test(line)) return 'off';
-    if (/^(v|vn|vt|f|o|g|s|mtllib|usemtl)\s/.test(line)) return 'obj';
-    return null;
-  }
-  return null;
+/**
+ * OFF, OBJ, PLY or STL from the extension; otherwise `'auto'`: the core
+ * tells the format from the first bytes, or says what else the file is.
+ */
+export function detectFormat(name: string): ReadFormat {
+  const ext = /\.(off|obj|ply|stl)$/i.exec(name.trim());
+  return ext ? (ext[1].toLowerCase() as ReadFormat) : 'auto';
 }
 
-/** Mesh text named `name`, with its format (from the name, else from the text); refuses what is neither OFF nor OBJ. */
-export function meshText(name: string, text: string): MeshText {
-  const format = detectFormat(name, text);
-  if (!format) throw new LoadError(name, 'This is not an OFF or OBJ file (expected a .off or .obj mesh).');
-  return { name, text, format };
+/** A mesh file named `name`, with its format (see {@link detectFormat}). */
+export function meshText(name: string, text: string | Uint8Array): MeshText {
+  return { name, text, format: detectFormat(name) };
 }
 
 /** Reads a dropped or picked file. */
@@ -57,7 +53,7 @@ export async function readFile(file: File): Promise<MeshText> {
     throw new LoadError(file.name, `The file is ${formatMB(file.size)}; the limit is ${formatMB(MAX_FILE_BYTES)}.`);
   }
   if (file.size === 0) throw new LoadError(file.name, 'The file is empty.');
-  return meshText(file.name, await file.text());
+  return meshText(file.name, new Uint8Array(await file.arrayBuffer()));
 }
 
 function formatMB(bytes: number): string {
@@ -127,13 +123,13 @@ async function download(src: string, base: string, maxBytes: number, signal?: Ab
   if (declared > maxBytes) {
     throw new LoadError(src, `The file is ${formatMB(declared)}; the limit for URLs is ${formatMB(maxBytes)}.`);
   }
-  const text = await readLimited(response, maxBytes, src);
-  return meshText(name, text);
+  const bytes = await readLimited(response, maxBytes, src);
+  return meshText(name, bytes);
 }
 
-/** The body of `response` as text, refused (LoadError about `src`) as soon as more than `maxBytes` arrived. */
-export async function readLimited(response: Response, maxBytes: number, src: string): Promise<string> {
-  if (!response.body) return response.text();
+/** The body of `response` as bytes, refused (LoadError about `src`) as soon as more than `maxBytes` arrived. */
+export async function readLimited(response: Response, maxBytes: number, src: string): Promise<Uint8Array> {
+  if (!response.body) return new Uint8Array(await response.arrayBuffer());
   const reader = response.body.getReader();
   const chunks: Uint8Array[] = [];
   let total = 0;
@@ -153,5 +149,5 @@ export async function readLimited(response: Response, maxBytes: number, src: str
     bytes.set(chunk, offset);
     offset += chunk.byteLength;
   }
-  return new TextDecoder().decode(bytes);
+  return bytes;
 }

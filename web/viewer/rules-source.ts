@@ -29,7 +29,7 @@ async function download(url: string, base: string, signal?: AbortSignal): Promis
     throw new LoadError(url, 'The rule file could not be downloaded.');
   }
   if (!response.ok) throw new LoadError(url, `The server answered ${response.status} for the rule file.`);
-  const text = await readLimited(response, MAX_RULES_BYTES, url);
+  const text = new TextDecoder().decode(await readLimited(response, MAX_RULES_BYTES, url));
   // Not quoted back: an embedding page may be on another origin.
   if (!text.trimStart().startsWith('{')) throw new LoadError(url, 'This is not a rule file (a JSON object).');
   return parseRuleSetText(text);

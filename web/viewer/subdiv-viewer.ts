@@ -22,6 +22,8 @@ import type {
   MeshFacts,
   MeshFormat,
   MeshTags,
+  ReadFormat,
+  ReadOptions,
   RenderBuffers,
   SchemeName,
   SizePrediction,
@@ -311,10 +313,15 @@ export class SubdivViewer {
     await this.replaceWith(name, async () => ({ data: await this.core.prepare(mesh), mesh }));
   }
 
-  /** Parses OFF/OBJ text in the worker and shows it. On failure the previous model stays. */
-  async loadText(text: string, format: MeshFormat, name: string): Promise<void> {
+  /** Parses an OFF/OBJ/PLY/STL file (text or bytes) in the worker and shows it. On failure the previous model stays. */
+  async loadText(
+    text: string | Uint8Array,
+    format: ReadFormat,
+    name: string,
+    options: ReadOptions = {},
+  ): Promise<void> {
     await this.replaceWith(name, async () => {
-      const { level, mesh } = await this.core.parse(text, format);
+      const { level, mesh } = await this.core.parse(text, format, options);
       return { data: level, mesh };
     });
   }
@@ -638,13 +645,14 @@ export class SubdivViewer {
   }
 
   /**
-   * OFF or OBJ text of the shown level, as a Blob: assembled from the core's
-   * pieces, so a text beyond a JS string's 512 M characters exports too.
+   * The shown level as a file (OFF/OBJ/PLY text, binary STL) with `comment`
+   * in it, as a Blob: assembled from the core's pieces, so a file beyond a
+   * JS string's 512 M characters exports too.
    */
-  async exportMesh(format: MeshFormat): Promise<Blob> {
+  async exportMesh(format: MeshFormat, comment = ''): Promise<Blob> {
     this.requireLevel();
-    const chunks = await this.withHandle(this.current, (h) => this.core.exportMesh(h, format));
-    return new Blob(chunks as BlobPart[], { type: 'text/plain' });
+    const chunks = await this.withHandle(this.current, (h) => this.core.exportMesh(h, format, comment));
+    return new Blob(chunks as BlobPart[], { type: format === 'stl' ? 'model/stl' : 'text/plain' });
   }
 
   /** A copy of the mesh of level `k` (default: the shown one), from the worker; null before a load. */

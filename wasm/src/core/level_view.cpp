@@ -17,10 +17,12 @@ Result<Mesh_facts> view_mesh(const Mesh_buffers& mesh, Render_sink& sink) {
 }
 
 Result<Mesh_facts> read_view(std::string_view text, Mesh_format format,
-                             Mesh_buffers& out, Render_sink& sink) {
+                             Mesh_buffers& out, Render_sink& sink,
+                             const Read_options& options) {
   Result<Mesh_facts> r;
   std::vector<std::uint32_t> corner_halfedges;
-  Result<Mesh_buffers> read = read_mesh(text, format, &corner_halfedges);
+  Result<Mesh_buffers> read =
+      read_mesh(text, format, &corner_halfedges, options);
   if (!read.ok()) {
     r.status = read.status;
     return r;

@@ -17,11 +17,12 @@ namespace subdivlab {
 /// more) of a loaded mesh, and its render arrays handed to `sink`.
 Result<Mesh_facts> view_mesh(const Mesh_buffers& mesh, Render_sink& sink);
 
-/// read_mesh(text, format) into `out`, its facts (CGAL's, from the
-/// Surface_mesh built from the reader's checked tables: one check, not
+/// read_mesh(text, format, options) into `out`, its facts (CGAL's, from
+/// the Surface_mesh built from the reader's checked tables: one check, not
 /// two) and its render arrays handed to `sink`.
 Result<Mesh_facts> read_view(std::string_view text, Mesh_format format,
-                             Mesh_buffers& out, Render_sink& sink);
+                             Mesh_buffers& out, Render_sink& sink,
+                             const Read_options& options = {});
 
 /// `subdivide_mesh(in, options)` into `out` (its memory check counting
 /// the render arrays: Subdivide_options::render_buffers), its render arrays

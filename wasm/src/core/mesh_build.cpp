@@ -420,11 +420,13 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
   if (best != npos) {
     const std::uint32_t c1 = static_cast<std::uint32_t>(first_corner);
     const std::uint32_t c2 = static_cast<std::uint32_t>(best);
-    return name.fail(
+    Check_result r = name.fail(
         face_of[c2],
         "inconsistent orientation: " + name.faces({face_of[c1], face_of[c2]}) +
             " both use edge " + name.vertex(idx[c1]) + "\u2192" +
             name.vertex(idx[next_corner(c1)]) + " in the same direction");
+    r.inconsistent_orientation = true;
+    return r;
   }
 
   // Vertices: corners around a vertex joined across shared edges must form

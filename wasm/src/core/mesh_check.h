@@ -26,6 +26,9 @@ struct Check_naming {
 struct Check_result {
   Status status;
   std::size_t face = static_cast<std::size_t>(-1);
+  /// The problem is an edge two faces use in the same direction (all the
+  /// checks before that one passed).
+  bool inconsistent_orientation = false;
 };
 
 /// Checks, in this order: at least one face, consistent array sizes,

@@ -37,7 +37,12 @@
 // has no floating-point std::from_chars.
 #include <fast_float/fast_float.h>
 
+#include "file_kind.h"
 #include "mesh_check.h"
+#include "orientation_repair.h"
+#include "ply_io.h"
+#include "stl_io.h"
+#include "text_writer.h"
 
 namespace subdivlab {
 namespace {
@@ -463,32 +468,7 @@ enum class Run_stop {
 }
 
 std::string at(int line) { return "line " + std::to_string(line) + ": "; }
-/// A token of the file as messages quote it: at most 40 bytes, cut before a
-/// UTF-8 sequence rather than inside it, and control bytes (NUL, ESC ...)
-/// written as \xNN, so a file cannot put terminal escapes or a NUL into the
-/// one-line error a CLI prints.
-std::string quoted(std::string_view tok) {
-  constexpr std::size_t max = 40;
-  std::size_t n = std::min(tok.size(), max);
-  // A UTF-8 sequence has at most 3 continuation bytes (10xxxxxx).
-  for (int back = 0; back < 3 && n > 0 && n < tok.size() &&
-                     (static_cast<unsigned char>(tok[n]) & 0xC0) == 0x80;
-       ++back)
-    --n;
-  std::string s = "'";
-  for (const char c : tok.substr(0, n)) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7F) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", u);
-      s += buf;
-    } else {
-      s += c;
-    }
-  }
-  if (n < tok.size()) s += "...";
-  return s + "'";
-}
+using detail::quoted;
 
 Result<Mesh_buffers> parse_fail(int line, const std::string& what) {
   Result<Mesh_buffers> r;
@@ -882,18 +862,20 @@ Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
                             const std::vector<int>& face_lines,
                             std::uint32_t vertex_offset,
                             std::vector<std::uint32_t>* corner_halfedges,
-                            Tag_list&& tags) {
+                            Tag_list&& tags, const Read_options& options) {
   detail::Check_naming naming;
   naming.face_lines = &face_lines;
   naming.vertex_offset = vertex_offset;
   Result<Mesh_buffers> r;
-  detail::Check_result check =
-      detail::check_buffers(mesh, naming, corner_halfedges);
+  std::size_t reversed = 0;
+  detail::Check_result check = detail::check_orientation(
+      mesh, naming, corner_halfedges, options.repair_orientation, reversed);
   if (!check.status.ok()) {
     r.status = std::move(check.status);
     return r;
   }
   if (!apply_tags(std::move(tags), mesh, r)) return r;
+  if (reversed > 0) mesh.tags.notes.push_back(detail::reversed_note(reversed));
   r.value = detail::drop_isolated_vertices(std::move(mesh));
   return r;
 }
@@ -902,7 +884,7 @@ Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
 
 Result<Mesh_buffers> read_off(std::string_view text,
                               std::vector<std::uint32_t>* corner_halfedges,
-                              bool fast) {
+                              const Read_options& options, bool fast) {
   Line_reader in(text);
   std::vector<std::string_view> tok;
   int line = 0;
@@ -1098,7 +1080,7 @@ Result<Mesh_buffers> read_off(std::string_view text,
     if (!read_tag(tok, line, tags, r)) return r;
   }
   return finish(std::move(mesh), face_lines, 0, corner_halfedges,
-                std::move(tags));
+                std::move(tags), options);
 }
 
 // ---------------------------------------------------------------- OBJ
@@ -1137,7 +1119,7 @@ bool parse_obj_corner(std::string_view t, long long& v) {
 
 Result<Mesh_buffers> read_obj(std::string_view text,
                               std::vector<std::uint32_t>* corner_halfedges,
-                              bool fast) {
+                              const Read_options& options, bool fast) {
   Line_reader in(text);
   std::vector<std::string_view> tok;
   int line = 0;
@@ -1234,200 +1216,14 @@ Result<Mesh_buffers> read_obj(std::string_view text,
     }
   }
   return finish(std::move(mesh), face_lines, 1, corner_halfedges,
-                std::move(tags));
+                std::move(tags), options);
 }
 
 // ---------------------------------------------------------------- writing
 
-/// The 17 significant digits of x > 0 as printf's "%.17g" rounds them
-/// (exactly, ties to even): x ~ d * 10^(e10 - 16) with 10^16 <= d < 10^17.
-/// Exact 128-bit arithmetic covers [1e-5, 1e17), where mesh coordinates
-/// live; false outside it (the caller then asks snprintf). printf itself
-/// costs about ten times as much per number, and em++ 3.1.6's libc++ has no
-/// floating-point std::to_chars.
-bool decimal_digits_17(double x, std::uint64_t& d, int& e10) {
-  if (!(x >= 1e-5 && x < 1e17)) return false;
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &x, sizeof bits);
-  const int biased = static_cast<int>(bits >> 52);  // x >= 1e-5: normal
-  const std::uint64_t f = (bits & ((1ull << 52) - 1)) | (1ull << 52);
-  const int e2 = biased - 1075;  // x = f * 2^e2
-  static const std::uint64_t pow5[] = {1ull,
-                                       5ull,
-                                       25ull,
-                                       125ull,
-                                       625ull,
-                                       3125ull,
-                                       15625ull,
-                                       78125ull,
-                                       390625ull,
-                                       1953125ull,
-                                       9765625ull,
-                                       48828125ull,
-                                       244140625ull,
-                                       1220703125ull,
-                                       6103515625ull,
-                                       30517578125ull,
-                                       152587890625ull,
-                                       762939453125ull,
-                                       3814697265625ull,
-                                       19073486328125ull,
-                                       95367431640625ull,
-                                       476837158203125ull,
-                                       2384185791015625ull};
-  constexpr std::uint64_t ten16 = 10000000000000000ull;
-  // floor(log10(x)) from the binary exponent (log10(2) ~ 78913 / 2^18),
-  // corrected by the loop when it is one off.
-  int e = ((biased - 1023) * 78913) >> 18;
-  for (int tries = 0; tries < 4; ++tries) {
-    const int k = 16 - e;  // y = x * 10^k = f * 5^k * 2^(e2 + k)
-    if (k < 0 || k > 22) return false;
-    const unsigned __int128 m = static_cast<unsigned __int128>(f) * pow5[k];
-    const int s = e2 + k;
-    std::uint64_t q = 0;
-    bool half = false, above = false;  // the dropped bits vs one half
-    if (s >= 0) {
-      if (s > 10) return false;
-      q = static_cast<std::uint64_t>(m << s);
-    } else {
-      const int r = -s;
-      if (r >= 120) return false;
-      const unsigned __int128 whole = m >> r;
-      const unsigned __int128 rest = m - (whole << r);
-      const unsigned __int128 one_half = static_cast<unsigned __int128>(1)
-                                         << (r - 1);
-      half = rest == one_half;
-      above = rest > one_half;
-      q = static_cast<std::uint64_t>(whole);
-    }
-    if (q < ten16) {
-      --e;
-      continue;
-    }
-    if (q >= 10 * ten16) {
-      ++e;
-      continue;
-    }
-    if (above || (half && (q & 1))) ++q;
-    if (q == 10 * ten16) {
-      q = ten16;
-      ++e;
-    }
-    d = q;
-    e10 = e;
-    return true;
-  }
-  return false;
-}
-
-/// x as printf("%.17g", x) writes it, at `out`; returns the end (at most 24
-/// characters later).
-char* write_g17(double x, char* out) {
-  std::uint64_t d = 0;
-  int e = 0;
-  if (x == 0 || !decimal_digits_17(std::fabs(x), d, e)) {
-    return out + std::snprintf(out, 32, "%.17g", x);
-  }
-  if (std::signbit(x)) *out++ = '-';
-  char digit[17];
-  auto high = static_cast<std::uint32_t>(d / 100000000u);
-  auto low = static_cast<std::uint32_t>(d % 100000000u);
-  for (int i = 16; i >= 9; --i, low /= 10)
-    digit[i] = static_cast<char>('0' + low % 10);
-  for (int i = 8; i >= 0; --i, high /= 10)
-    digit[i] = static_cast<char>('0' + high % 10);
-  int n = 17;
-  while (n > 1 && digit[n - 1] == '0') --n;  // %g drops trailing zeros
-  if (e < -4) {  // d.ddde-05: the only exponent form in range
-    *out++ = digit[0];
-    if (n > 1) {
-      *out++ = '.';
-      std::memcpy(out, digit + 1, n - 1);
-      out += n - 1;
-    }
-    *out++ = 'e';
-    *out++ = '-';
-    *out++ = static_cast<char>('0' + (-e) / 10);
-    *out++ = static_cast<char>('0' + (-e) % 10);
-    return out;
-  }
-  if (e < 0) {  // 0.000ddd
-    *out++ = '0';
-    *out++ = '.';
-    for (int i = 0; i < -e - 1; ++i) *out++ = '0';
-    std::memcpy(out, digit, n);
-    return out + n;
-  }
-  const int whole = e + 1;  // e <= 16
-  std::memcpy(out, digit, whole);
-  out += whole;
-  if (n > whole) {
-    *out++ = '.';
-    std::memcpy(out, digit + whole, n - whole);
-    out += n - whole;
-  }
-  return out;
-}
-
-char* write_uint(std::uint64_t x, char* out) {
-  char buf[20];
-  int n = 0;
-  do {
-    buf[n++] = static_cast<char>('0' + x % 10);
-    x /= 10;
-  } while (x != 0);
-  while (n > 0) *out++ = buf[--n];
-  return out;
-}
-
-/// Text collected in a buffer of `capacity` bytes and handed to the sink
-/// whenever the next token might not fit.
-class Chunk_writer {
- public:
-  /// Longest piece put() may be asked for: a number with its separator.
-  static constexpr std::size_t max_piece = 32;
-
-  Chunk_writer(std::size_t capacity, const Chunk_sink& sink)
-      : buffer_(capacity), sink_(sink) {}
-
-  /// Where the next piece (at most max_piece bytes) goes; commit() its end.
-  char* reserve() {
-    if (buffer_.size() - used_ < max_piece) flush();
-    return buffer_.data() + used_;
-  }
-  void commit(char* end) {
-    used_ = static_cast<std::size_t>(end - buffer_.data());
-  }
-  bool ok() const { return ok_; }
-
-  /// Text of any length, in pieces of at most max_piece bytes.
-  void put(std::string_view text) {
-    while (!text.empty()) {
-      const std::size_t n = std::min(text.size(), max_piece);
-      char* p = reserve();
-      std::memcpy(p, text.data(), n);
-      commit(p + n);
-      text.remove_prefix(n);
-    }
-  }
-
-  /// Hands over what is left; false if the sink stopped the writing.
-  bool finish() {
-    flush();
-    return ok_;
-  }
-
- private:
-  void flush() {
-    if (used_ > 0 && ok_) ok_ = sink_(std::string_view(buffer_.data(), used_));
-    used_ = 0;
-  }
-
-  std::vector<char> buffer_;
-  std::size_t used_ = 0;
-  const Chunk_sink& sink_;
-  bool ok_ = true;
-};
+using detail::Chunk_writer;
+using detail::write_g17;
+using detail::write_uint;
 
 /// A sharpness as its shortest "%.Ng" that reads back as the same float,
 /// preferring a form without an exponent ("10", not "1e+01"); 9 significant
@@ -1498,13 +1294,29 @@ void write_tags(const Mesh_tags& tags, bool off, Chunk_writer& out) {
   }
 }
 
-/// read_mesh, with or without the fast path.
+/// read_mesh, with or without the fast path (OFF and OBJ).
 Result<Mesh_buffers> read_text(std::string_view text, Mesh_format format,
                                std::vector<std::uint32_t>* corner_halfedges,
-                               bool fast) {
+                               const Read_options& options, bool fast) {
   try {
-    return format == Mesh_format::off ? read_off(text, corner_halfedges, fast)
-                                      : read_obj(text, corner_halfedges, fast);
+    // A binary STL's 80-byte header is free text: its size, not its first
+    // bytes, says what it is.
+    if (format != Mesh_format::stl || !detail::is_binary_stl(text)) {
+      Result<Mesh_buffers> r;
+      r.status = detail::check_not_other_file(text);
+      if (!r.ok()) return r;
+    }
+    switch (format) {
+      case Mesh_format::off:
+        return read_off(text, corner_halfedges, options, fast);
+      case Mesh_format::obj:
+        return read_obj(text, corner_halfedges, options, fast);
+      case Mesh_format::ply:
+        return detail::read_ply(text, corner_halfedges, options);
+      case Mesh_format::stl:
+        return detail::read_stl(text, corner_halfedges, options);
+    }
+    return parse_fail(0, "unknown mesh format");
   } catch (const std::bad_alloc&) {
     Result<Mesh_buffers> r;
     r.status = Status::error(Status_code::too_large,
@@ -1522,15 +1334,82 @@ Result<Mesh_buffers> read_text(std::string_view text, Mesh_format format,
 }  // namespace
 
 Result<Mesh_buffers> read_mesh(std::string_view text, Mesh_format format,
-                               std::vector<std::uint32_t>* corner_halfedges) {
-  return read_text(text, format, corner_halfedges, true);
+                               std::vector<std::uint32_t>* corner_halfedges,
+                               const Read_options& options) {
+  return read_text(text, format, corner_halfedges, options, true);
+}
+
+const char* format_name(Mesh_format format) {
+  switch (format) {
+    case Mesh_format::off:
+      return "off";
+    case Mesh_format::obj:
+      return "obj";
+    case Mesh_format::ply:
+      return "ply";
+    case Mesh_format::stl:
+      return "stl";
+  }
+  return "off";
+}
+
+Result<Mesh_format> detect_format(std::string_view bytes) {
+  Result<Mesh_format> r;
+  if (detail::is_binary_stl(bytes)) {
+    r.value = Mesh_format::stl;
+    return r;
+  }
+  r.status = detail::check_not_other_file(bytes);
+  if (!r.ok()) return r;
+  // The first line that holds anything but blanks and comments.
+  std::string_view rest = bytes.substr(0, 1 << 16);
+  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);
+  if (rest.substr(0, 3) == "ply" &&
+      (rest.size() == 3 || rest[3] == '\n' || rest[3] == '\r')) {
+    r.value = Mesh_format::ply;
+    return r;
+  }
+  while (!rest.empty()) {
+    std::size_t eol = rest.find_first_of("\r\n");
+    if (eol == std::string_view::npos) eol = rest.size();
+    std::string_view line = rest.substr(0, eol);
+    rest.remove_prefix(std::min(eol + 1, rest.size()));
+    const std::size_t b = line.find_first_not_of(" \t");
+    if (b == std::string_view::npos || line[b] == '#') continue;
+    line.remove_prefix(b);
+    const std::string_view word = line.substr(0, line.find_first_of(" \t"));
+    if (word == "solid") {
+      r.value = Mesh_format::stl;
+      return r;
+    }
+    const std::size_t off = word.find("OFF");
+    if (off != std::string_view::npos && off + 3 == word.size() &&
+        word.find_first_not_of("STCN4n") == off) {
+      r.value = Mesh_format::off;
+      return r;
+    }
+    for (const char* k :
+         {"v", "vn", "vt", "f", "o", "g", "s", "mtllib", "usemtl"}) {
+      if (word == k && word.size() < line.size()) {
+        r.value = Mesh_format::obj;
+        return r;
+      }
+    }
+    break;
+  }
+  r.status = Status::error(
+      Status_code::parse_error,
+      std::string("This is not a mesh file: no OFF, OBJ, PLY or STL header "
+                  "or statement at its start. ") +
+          detail::formats_read);
+  return r;
 }
 
 namespace detail {
 Result<Mesh_buffers> read_mesh_general(
     std::string_view text, Mesh_format format,
     std::vector<std::uint32_t>* corner_halfedges) {
-  return read_text(text, format, corner_halfedges, false);
+  return read_text(text, format, corner_halfedges, {}, false);
 }
 }  // namespace detail
 
@@ -1643,14 +1522,27 @@ Status check_writable(const Mesh_buffers& mesh) {
 }
 
 bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
-                       std::size_t max_chunk_bytes, const Chunk_sink& sink) {
+                       std::size_t max_chunk_bytes, const Chunk_sink& sink,
+                       std::string_view comment) {
+  if (format == Mesh_format::ply)
+    return detail::write_ply_chunks(mesh, max_chunk_bytes, sink, comment);
+  if (format == Mesh_format::stl)
+    return detail::write_stl_chunks(mesh, max_chunk_bytes, sink, comment);
   Chunk_writer out(std::max(max_chunk_bytes, min_chunk_bytes), sink);
+  std::string comment_line;
+  if (!comment.empty()) {
+    comment_line = "# " + std::string(comment) + "\n";
+    for (std::size_t i = 0; i + 1 < comment_line.size(); ++i)
+      if (comment_line[i] == '\n' || comment_line[i] == '\r')
+        comment_line[i] = ' ';
+  }
   const std::size_t nv = mesh.vertex_count(), nf = mesh.face_count();
   const bool off = format == Mesh_format::off;
   if (off) {
     char* p = out.reserve();
     std::memcpy(p, "OFF\n", 4);
     out.commit(p + 4);
+    out.put(comment_line);
     p = write_uint(nv, out.reserve());
     *p++ = ' ';
     out.commit(p);
@@ -1658,6 +1550,7 @@ bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
     std::memcpy(p, " 0\n", 3);
     out.commit(p + 3);
   }
+  if (!off) out.put(comment_line);
   const double* xyz = mesh.positions.data();
   for (std::size_t v = 0; v < nv && out.ok(); ++v, xyz += 3) {
     char* p = out.reserve();
@@ -1696,15 +1589,18 @@ bool write_mesh_chunks(const Mesh_buffers& mesh, Mesh_format format,
   return out.finish();
 }
 
-std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format) {
+std::string write_mesh(const Mesh_buffers& mesh, Mesh_format format,
+                       std::string_view comment) {
   std::string text;
   text.reserve(mesh.vertex_count() * 60 + mesh.face_indices.size() * 8 +
                mesh.face_count() * 4 + 32);
-  write_mesh_chunks(mesh, format, std::size_t{1} << 16,
-                    [&text](std::string_view chunk) {
-                      text.append(chunk);
-                      return true;
-                    });
+  write_mesh_chunks(
+      mesh, format, std::size_t{1} << 16,
+      [&text](std::string_view chunk) {
+        text.append(chunk);
+        return true;
+      },
+      comment);
   return text;
 }
 

@@ -104,8 +104,12 @@ struct Mesh_buffers {
 /// What went wrong, as data. The bindings turn it into a JS error.
 enum class Status_code {
   ok = 0,
-  parse_error,    ///< the text is not a valid OFF/OBJ file
-  invalid_mesh,   ///< parsed, but not a valid oriented 2-manifold polygon mesh
+  parse_error,   ///< the file is not a valid OFF/OBJ/PLY/STL file
+  invalid_mesh,  ///< parsed, but not a valid oriented 2-manifold polygon mesh
+  /// invalid_mesh whose first problem is faces turned inconsistently on an
+  /// orientable surface: reading again with Read_options::repair_orientation
+  /// turns them to agree.
+  inconsistent_orientation,
   not_triangles,  ///< a scheme needs triangles and the mesh has other faces
   too_large,  ///< the result would not fit in memory (predicted, or ran out)
   invalid_argument,  ///< unknown scheme, negative levels, bad weights ...
@@ -141,6 +145,8 @@ inline const char* status_code_name(Status_code c) {
       return "parse_error";
     case Status_code::invalid_mesh:
       return "invalid_mesh";
+    case Status_code::inconsistent_orientation:
+      return "inconsistent_orientation";
     case Status_code::not_triangles:
       return "not_triangles";
     case Status_code::too_large:

@@ -1,0 +1,35 @@
+// Files that are not meshes, told by their first bytes. Internal to the
+// core: read_mesh and detect_format ask it first, so the app, the worker and
+// the CLI all say "This is a PNG image" instead of quoting binary as a bad
+// OFF header. Owner: file_kind.cpp.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "mesh_types.h"
+
+namespace subdivlab::detail {
+
+/// What `bytes` is when its first bytes (magic numbers) say it is a file of
+/// another kind: "a PNG image", "a JPEG image", "a GIF image", "a PDF
+/// document", "a ZIP archive (.zip, .docx, .3mf, ...)", "a glTF model",
+/// "a binary glTF model (.glb)", "gzip-compressed data"; nullptr otherwise.
+/// JSON glTF is an object with an "asset" member in its first 4 KiB.
+const char* other_file_kind(std::string_view bytes);
+
+/// ok, or the parse_error "This is a PNG image, not a mesh. SubdivLab reads
+/// OFF, OBJ, PLY and STL." for other_file_kind's files.
+Status check_not_other_file(std::string_view bytes);
+
+/// A token of the file as messages quote it: at most 40 bytes, cut before a
+/// UTF-8 sequence rather than inside it, and control bytes (NUL, ESC ...)
+/// written as \xNN, so a file cannot put terminal escapes or a NUL into the
+/// one-line error a CLI prints.
+std::string quoted(std::string_view tok);
+
+/// The sentence naming the formats read, for messages.
+inline constexpr const char* formats_read =
+    "SubdivLab reads OFF, OBJ, PLY and STL.";
+
+}  // namespace subdivlab::detail
