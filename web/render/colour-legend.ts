@@ -38,6 +38,8 @@ export class ColourLegend {
     this.element = document.createElement('div');
     this.element.dataset.testid = 'view.colour-bar';
     this.element.setAttribute('role', 'img');
+    // Fit keeps the model out from under it (fit.ts freeRect).
+    this.element.setAttribute('data-covers-view', '');
     this.element.style.cssText =
       'position:absolute;left:10px;bottom:10px;width:min(270px, calc(100% - 40px));box-sizing:border-box;padding:6px 8px;border-radius:4px;' +
       'font:11px/1.3 system-ui,sans-serif;color:#1f2937;background:rgba(255,255,255,0.9);' +

@@ -394,6 +394,8 @@ export class SceneView {
     const direction = view ? new Vector3().fromArray(view.direction) : FIT_DIRECTION.clone();
     const up = new Vector3().fromArray(view?.up ?? [0, 1, 0]);
     const { width, height } = this.size;
+    // The view may have changed size since the resize observer last ran (a pane was just added beside it).
+    if (Math.abs(this.camera.aspect - width / height) > 1e-9) this.resize();
     const canvas = this.canvas.getBoundingClientRect();
     const covers = [...this.container.querySelectorAll<HTMLElement>('[data-covers-view]')]
       .filter((e) => e.getClientRects().length > 0)
