@@ -7,6 +7,7 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
 import { halfedgeTable } from '../../web/core/subdiv-core';
+import { sizeRefusal } from '../../web/teach/halfedge-explorer';
 import {
   cgalExpressions,
   circulate,
@@ -109,5 +110,15 @@ describe('circulations against the mesh', () => {
     expect(circulationReport(table, border, 'face', loop.length)).toBe(
       `border loop: ${loop.length} halfedges around it`,
     );
+  });
+});
+
+describe('sizeRefusal', () => {
+  it('names the levels small enough, or asks for a smaller mesh', () => {
+    expect(sizeRefusal(24576, [24, 96, 384, 1536, 6144, 24576])).toBe(
+      'The halfedge explorer shows meshes up to 5,000 halfedges; this level has 24,576. Pick level 0, 1, 2 or 3.',
+    );
+    expect(sizeRefusal(6144, [120, 6144])).toMatch(/has 6,144\. Pick level 0\.$/);
+    expect(sizeRefusal(9000, [9000])).toMatch(/Load a smaller mesh\.$/);
   });
 });
