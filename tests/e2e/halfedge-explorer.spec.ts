@@ -187,3 +187,24 @@ test('a level above the size limit is refused, naming the levels that fit', asyn
   await expect.poll(async () => (await halfedges(app)).explorer.halfedgeCount).toBe(96);
   await expect(app.byTestId('halfedges.message')).toHaveText('Click an arrow (a halfedge), or type its number.');
 });
+
+test('the open grid: border halfedges outside the boundary, one border loop of 12', async ({ app }) => {
+  await app.open();
+  await app.openSample('open-grid', 'open-grid.off');
+  await explore(app, 48);
+  const { table } = await halfedges(app);
+  if (!table) throw new Error('no table');
+  const border = table.face.flatMap((f, h) => (f < 0 ? [h] : []));
+  expect(border).toHaveLength(12);
+  await app.byTestId('halfedges.number').fill(String(border[0]));
+  await app.byTestId('halfedges.number').press('Enter');
+  await expect(app.byTestId('halfedges.picked')).toContainText(`Halfedge ${border[0]}: `);
+  await expect(app.byTestId('halfedges.picked')).toContainText(', border; ');
+  await app.byTestId('halfedges.circulate-face').click();
+  await expect(app.byTestId('halfedges.report')).toHaveText('border loop: 12 halfedges around it', { timeout: 10_000 });
+  // Opposite leads inside: a halfedge of a face.
+  await app.page.keyboard.press('o');
+  await expect.poll(async () => (await halfedges(app)).explorer.picked?.face).toBe(table.face[border[0] ^ 1]);
+  expect(table.face[border[0] ^ 1]).toBeGreaterThanOrEqual(0);
+  await app.snapshot('halfedge-explorer-open-grid');
+});
