@@ -172,6 +172,14 @@ test('√3 by hand on the icosahedron: 62 operators, then the scheme’s level 1
   // Undo goes back to the icosahedron before the walk.
   await app.byTestId('euler.undo').click();
   await expect.poll(async () => (await app.facts()).faces).toBe(20);
+  await expect(app.byTestId('euler.undo')).toBeDisabled();
+  // Another model ends the history: nothing to undo, no walk.
+  await app.byTestId('sqrt3.step').click();
+  await expect(app.byTestId('sqrt3.progress')).toHaveText(/^1 \/ 62 /);
+  await expect(app.byTestId('euler.undo')).toBeEnabled();
+  await app.openSample('octahedron', 'octahedron.off');
+  await expect(app.byTestId('euler.undo')).toBeDisabled();
+  await expect(app.byTestId('sqrt3.progress')).toHaveText('');
 });
 
 test('a level above the size limit is refused, naming the levels that fit', async ({ app }) => {

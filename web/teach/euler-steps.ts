@@ -61,6 +61,8 @@ export class EulerSteps {
   private walk: (Sqrt3WalkState & { source: Mesh; name: string }) | null = null;
   private playing = false;
   private busy = false;
+  /** The mesh the last edit, undo or walk step showed: another level 0 (a model loaded) ends the history. */
+  private shownMesh: Mesh | null = null;
   private readonly listeners = new Set<(state: EulerState) => void>();
 
   constructor(
@@ -69,6 +71,17 @@ export class EulerSteps {
     private readonly onError: (error: unknown) => void,
   ) {
     explorer.onChange(() => this.emit());
+    viewer.onChange(() => {
+      const mesh = viewer.controlMesh;
+      if (this.busy || !this.shownMesh || !mesh || mesh === this.shownMesh) return;
+      this.undoStack.length = 0;
+      this.shownMesh = null;
+      this.outcome = null;
+      this.problem = '';
+      this.walk = null;
+      this.playing = false;
+      this.emit();
+    });
   }
 
   get state(): EulerState {
@@ -196,6 +209,7 @@ export class EulerSteps {
   private async show(mesh: Mesh, name: string): Promise<void> {
     const view = this.viewer.getView();
     await this.viewer.load(mesh, name);
+    this.shownMesh = mesh;
     this.viewer.setView(view);
   }
 
