@@ -3,7 +3,8 @@
  * and its best practices) finds no violation in the app's main states: empty,
  * a model with levels, the zebra and curvature modes with the colour bar,
  * saved views, the custom rules, open menus, an error, side by side with
- * Inspect's results, and a phone.
+ * Inspect's results, the halfedge explorer with its Euler operators and
+ * √3 by hand, and a phone.
  */
 import { readFileSync } from 'node:fs';
 import AxeBuilder from '@axe-core/playwright';
@@ -72,4 +73,31 @@ test('no axe violations: side by side with distances, the results of Inspect, a 
   await expectNoViolations(app.page, 'two panes side by side');
   await app.page.setViewportSize({ width: 390, height: 844 });
   await expectNoViolations(app.page, 'a phone');
+});
+
+test('no axe violations: the halfedge explorer, a split face, √3 by hand, the size refusal', async ({ app }) => {
+  test.setTimeout(120_000);
+  await app.open();
+  await app.openSample('tetrahedron', 'tetrahedron.off');
+  await app.byTestId('halfedges.explore').click();
+  await app.byTestId('halfedges.number').fill('0');
+  await app.byTestId('halfedges.number').press('Enter');
+  await app.byTestId('halfedges.circulate-vertex').click();
+  await expect(app.byTestId('halfedges.report')).toHaveText(/3 halfedges around it$/);
+  await expectNoViolations(app.page, 'the explorer with a circulated vertex');
+  await app.byTestId('euler.split_edge').click();
+  await expect(app.byTestId('euler.outcome')).toContainText('split_edge: V 5');
+  await app.byTestId('euler.flip_edge').click();
+  await expect(app.byTestId('euler.problem')).toBeVisible();
+  await expectNoViolations(app.page, 'an Euler operator done and one refused');
+  await app.byTestId('euler.undo').click();
+  await app.byTestId('sqrt3.step').click();
+  await expect(app.byTestId('sqrt3.progress')).toHaveText(/^1 \/ 14 operators/);
+  await expectNoViolations(app.page, 'the √3 walk-through under way');
+  await app.byTestId('euler.undo').click();
+  await expect.poll(async () => (await app.facts()).faces).toBe(4);
+  // Catmull-Clark's level 5 of the tetrahedron: 12,288 quads.
+  for (let i = 0; i < 5; ++i) await app.subdivide();
+  await expect(app.byTestId('halfedges.message')).toContainText('shows meshes up to 5,000 halfedges');
+  await expectNoViolations(app.page, 'the explorer refusing a large level');
 });

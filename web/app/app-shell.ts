@@ -349,6 +349,20 @@ export class AppShell {
         const rect = this.viewer.view.canvas.getBoundingClientRect();
         return { x: rect.left + at.x, y: rect.top + at.y };
       },
+      halfedges: () => {
+        const table = this.tools.halfedges.halfedges;
+        return {
+          explorer: this.tools.halfedges.state,
+          euler: this.tools.euler.state,
+          table: table ? { next: [...table.next], target: [...table.target], face: [...table.face] } : null,
+        };
+      },
+      arrowOnScreen: (h) => {
+        const at = this.tools.halfedges.arrowOnScreen(h);
+        if (!at) return null;
+        const rect = this.viewer.view.canvas.getBoundingClientRect();
+        return { x: rect.left + at.x, y: rect.top + at.y };
+      },
       sideBySide: () => {
         const s = this.tools.sideBySide.state;
         const d = s.distance;

@@ -1,7 +1,8 @@
 /**
  * The app's tools around the viewer, each with its panel: crease editing,
  * the stencil inspector, the basis function view, split then smooth, side
- * by side (its panes around the app's view), Inspect and the result check;
+ * by side (its panes around the app's view), Inspect, the result check and
+ * the halfedge explorer with its Euler operators;
  * which of them a click on the view picks for. The shell places the panels
  * and the panes and gives the tools what they need of it (ToolsHost).
  */
@@ -10,6 +11,8 @@ import type { SchemeName } from '../core/mesh';
 import { CreaseEditor } from '../edit/crease-editor';
 import { MeshInspector } from '../inspect/mesh-inspector';
 import { BasisView } from '../teach/basis-view';
+import { EulerSteps } from '../teach/euler-steps';
+import { HalfedgeExplorer } from '../teach/halfedge-explorer';
 import { ResultCheck } from '../teach/result-check';
 import { SideBySide } from '../teach/side-by-side';
 import { SplitSmooth } from '../teach/split-smooth';
@@ -17,6 +20,8 @@ import { StencilInspector } from '../teach/stencil-inspector';
 import { BasisPanel } from '../ui/basis-panel';
 import { CheckPanel } from '../ui/check-panel';
 import { CreasePanel } from '../ui/crease-panel';
+import { EulerPanel } from '../ui/euler-panel';
+import { HalfedgePanel } from '../ui/halfedge-panel';
 import { InspectPanel } from '../ui/inspect-panel';
 import { PaneGrid } from '../ui/pane-grid';
 import { SidePanel } from '../ui/side-panel';
@@ -38,8 +43,8 @@ export interface ToolsHost {
   confirmLargeStep(info: LargeStepInfo, scheme: SchemeName): Promise<boolean>;
 }
 
-/** What a click on the view picks for: the crease editor, the stencil inspector, the basis view, or none. */
-export type ClickMode = 'creases' | 'inspect' | 'basis' | null;
+/** What a click on the view picks for: the crease editor, the stencil inspector, the basis view, the halfedge explorer, or none. */
+export type ClickMode = 'creases' | 'inspect' | 'basis' | 'halfedges' | null;
 
 export class AppTools {
   readonly creaseEditor: CreaseEditor;
@@ -57,6 +62,9 @@ export class AppTools {
   private readonly inspectPanel: InspectPanel;
   private readonly resultCheck: ResultCheck;
   private readonly checkPanel: CheckPanel;
+  readonly halfedges: HalfedgeExplorer;
+  readonly euler: EulerSteps;
+  private readonly halfedgePanel: HalfedgePanel;
 
   constructor(private readonly host: ToolsHost) {
     this.creaseEditor = new CreaseEditor(this.host.viewer, (error) => this.host.modelError(error));
@@ -140,11 +148,38 @@ export class AppTools {
     });
     this.resultCheck.onChange((state) => this.checkPanel.update(state));
     this.checkPanel.update(this.resultCheck.state);
+    this.halfedges = new HalfedgeExplorer(this.host.viewer, (error) => this.host.modelError(error));
+    this.euler = new EulerSteps(this.host.viewer, this.halfedges, (error) => this.host.modelError(error));
+    const eulerPanel = new EulerPanel({
+      onChooseSecond: (on) => this.halfedges.chooseSecond(on),
+      onOperator: (op) => void this.euler.apply(op),
+      onUndo: () => void this.euler.undo(),
+      onStep: () => void this.euler.step(),
+      onPlay: (play) => (play ? void this.euler.play() : this.euler.stop()),
+    });
+    this.halfedgePanel = new HalfedgePanel(
+      {
+        onExploring: (on) => this.setClickMode(on ? 'halfedges' : null),
+        onHalfedge: (h) => this.halfedges.select(h),
+        onMove: (move) => this.halfedges.move(move),
+        onCirculate: (kind) => this.halfedges.circulate(kind),
+      },
+      eulerPanel,
+    );
+    const showHalfedges = () => {
+      const state = this.halfedges.state;
+      this.halfedgePanel.update(state);
+      eulerPanel.update(this.euler.state, state.picked !== null, state.choosingSecond, state.second);
+    };
+    this.halfedges.onChange(showHalfedges);
+    this.euler.onChange(showHalfedges);
+    showHalfedges();
     // A click on the view picks for the crease editor, the inspector or the basis view, whichever is on.
     this.host.viewer.view.onClick = (click) => {
       this.creaseEditor.click(click);
       this.inspector.click(click);
       this.basis.click(click);
+      this.halfedges.click(click);
     };
     this.creasePanel = new CreasePanel({
       onEditing: (on) => this.setClickMode(on ? 'creases' : null),
@@ -163,6 +198,7 @@ export class AppTools {
       this.creasePanel.element,
       this.stencilPanel.element,
       this.basisPanel.element,
+      this.halfedgePanel.element,
       this.splitPanel.element,
       this.checkPanel.element,
       this.inspectPanel.element,
@@ -175,8 +211,10 @@ export class AppTools {
     if (mode !== 'creases') this.creaseEditor.setEditing(false);
     if (mode !== 'inspect') this.inspector.setInspecting(false);
     if (mode !== 'basis') this.basis.setPicking(false);
+    if (mode !== 'halfedges') this.halfedges.setExploring(false);
     if (mode === 'creases') this.creaseEditor.setEditing(true);
     if (mode === 'inspect') this.inspector.setInspecting(true);
     if (mode === 'basis') this.basis.setPicking(true);
+    if (mode === 'halfedges') this.halfedges.setExploring(true);
   }
 }

@@ -6,6 +6,8 @@ import type { MeshFacts } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
+import type { EulerState } from '../teach/euler-steps';
+import type { ExplorerState } from '../teach/halfedge-explorer';
 import type { DrawnLevel } from '../viewer/subdiv-viewer';
 import type { ModelSource } from './share-actions';
 
@@ -104,6 +106,15 @@ export interface SubdivLabTestApi {
   vertexOnScreen(v: number, shown?: boolean): { x: number; y: number } | null;
   /** The side-by-side panes, their levels and the distance measured. */
   sideBySide(): SideBySideTestState;
+  /** The halfedge explorer (picked halfedge, expressions, circulation) and its Euler operators (outcome, √3 walk). */
+  halfedges(): {
+    explorer: ExplorerState;
+    euler: EulerState;
+    /** The shown level's halfedge table while the explorer draws it. */
+    table: { next: number[]; target: number[]; face: number[] } | null;
+  };
+  /** Where the middle of halfedge `h`'s arrow is drawn, in page (client) pixels; null: not drawn or behind the camera. */
+  arrowOnScreen(h: number): { x: number; y: number } | null;
   /**
    * Every vertex of computed level `level` (0: the control mesh) projected through the camera, in CSS
    * pixels from the canvas's top left, not clipped (a point off the canvas has x or y outside it); in

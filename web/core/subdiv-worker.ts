@@ -12,7 +12,9 @@ import { orientation } from './orientation';
 import {
   checkRules,
   compareMeshes,
+  eulerOperator,
   exportMeshChunks,
+  halfedgeTable,
   hausdorffDistance,
   init,
   inspectMesh,
@@ -20,6 +22,7 @@ import {
   parseMesh,
   predictSize,
   schemeNames,
+  sqrt3ByHand,
   stepStencils,
   subdivide,
   subdivideForView,
@@ -44,6 +47,9 @@ interface WorkerScope {
 const scope = self as unknown as WorkerScope;
 
 /** The levels kept for the page, by handle id; `epoch` is this worker's, from init. */
+/** The √3 walk-through's check: a share of the bounding-box diagonal, as the native tests use. */
+const SQRT3_TOLERANCE = 1e-12;
+
 const kept = new Map<number, KeptLevel>();
 let epoch = -1;
 let nextId = 1;
@@ -209,6 +215,30 @@ const handlers: Handlers = {
   async mesh({ handle }) {
     const copy = copyOf(keptLevel(handle).mesh);
     return { value: copy, transfer: meshBuffers(copy) };
+  },
+  async halfedges({ handle }) {
+    await init();
+    const table = halfedgeTable(keptLevel(handle).mesh);
+    const arrays = [table.next, table.prev, table.opposite, table.target, table.face];
+    return { value: table, transfer: arrays.map((a) => a.buffer as ArrayBuffer) };
+  },
+  async euler({ mesh, op, h, h2 }) {
+    await init();
+    const result = eulerOperator(mesh, op, h, h2);
+    return { value: result, transfer: meshBuffers(result.mesh) };
+  },
+  async sqrt3ByHand({ mesh, steps }) {
+    await init();
+    const walk = sqrt3ByHand(mesh, steps);
+    const comparison =
+      walk.done === walk.total
+        ? compareMeshes(subdivide(mesh, { scheme: 'sqrt3', levels: 1 }), walk.mesh, SQRT3_TOLERANCE)
+        : null;
+    const transfer = [
+      ...meshBuffers(walk.mesh),
+      ...(comparison ? [comparison.matched.buffer, comparison.errors.buffer] : []),
+    ];
+    return { value: { ...walk, comparison }, transfer };
   },
   async release({ handles }) {
     for (const h of handles) if (h.epoch === epoch) kept.delete(h.id);

@@ -11,6 +11,7 @@
 import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
 import type { VertexCurvature } from './curvature';
+import type { EulerOperator, EulerResult, HalfedgeTable } from './halfedges';
 import type { Inspection, InspectOptions } from './inspect';
 import type { Mesh, MeshFacts, MeshFormat, ReadFormat, ReadOptions, SizePrediction, SubdivideOptions } from './mesh';
 import type { RuleSet } from './rule-set';
@@ -21,6 +22,7 @@ import workerUrl from './subdiv-worker.ts?worker&url';
 import type {
   LevelData,
   LevelHandle,
+  Sqrt3Check,
   WorkerRequestKind,
   WorkerRequestMessage,
   WorkerRequests,
@@ -363,6 +365,21 @@ export class CoreSession {
   /** A copy of a kept level's mesh. */
   mesh(handle: LevelHandle): Promise<Mesh> {
     return this.client.request(this, 'mesh', { handle });
+  }
+
+  /** The halfedge table of kept level `handle` (CGAL's Surface_mesh numbering). */
+  halfedges(handle: LevelHandle): Promise<HalfedgeTable> {
+    return this.client.request(this, 'halfedges', { handle });
+  }
+
+  /** CGAL's Euler operator `op` on halfedge `h` (`h2`: split_face's other corner) of `mesh`. */
+  euler(mesh: Mesh, op: EulerOperator, h: number, h2 = 0): Promise<EulerResult> {
+    return this.client.request(this, 'euler', { mesh, op, h, h2 });
+  }
+
+  /** √3 by hand on `mesh` stopped after `steps` operators, checked against the scheme once complete. */
+  sqrt3ByHand(mesh: Mesh, steps: number): Promise<Sqrt3Check> {
+    return this.client.request(this, 'sqrt3ByHand', { mesh, steps });
   }
 
   /**

@@ -8,6 +8,7 @@
 import type { StepOptions } from './basis';
 import type { MeshComparison } from './compare';
 import type { VertexCurvature } from './curvature';
+import type { EulerOperator, EulerResult, HalfedgeTable, Sqrt3Walk } from './halfedges';
 import type { Inspection, InspectOptions } from './inspect';
 import type {
   Mesh,
@@ -53,6 +54,11 @@ export interface LevelData {
   orientation: -1 | 0 | 1;
 }
 
+/** A √3 walk-through's state, with the check against the scheme once every operator is done. */
+export interface Sqrt3Check extends Sqrt3Walk {
+  comparison: MeshComparison | null;
+}
+
 /** Requests the worker understands, by kind. */
 export interface WorkerRequests {
   /** Loads the WASM core (from the page's compiled module when given); answers the scheme names. */
@@ -91,6 +97,15 @@ export interface WorkerRequests {
   export: { args: { handle: LevelHandle; format: MeshFormat; comment?: string }; result: Uint8Array[] };
   /** A copy of a kept level's mesh. */
   mesh: { args: { handle: LevelHandle }; result: Mesh };
+  /** The halfedge table of a kept level, numbered as CGAL's Surface_mesh numbers it (halfedges.ts). */
+  halfedges: { args: { handle: LevelHandle }; result: HalfedgeTable };
+  /** CGAL's Euler operator `op` on halfedge `h` (and `h2` for split_face) of `mesh`: the edited mesh, not kept. */
+  euler: { args: { mesh: Mesh; op: EulerOperator; h: number; h2: number }; result: EulerResult };
+  /**
+   * One √3 step of `mesh` by Euler operators stopped after `steps` of them; once all are done, the
+   * comparison (compare.ts, 1e-12) of the result with the √3 scheme's level 1 of `mesh`, else null.
+   */
+  sqrt3ByHand: { args: { mesh: Mesh; steps: number }; result: Sqrt3Check };
   /** Forgets kept levels (handles of an earlier worker are ignored). */
   release: { args: { handles: LevelHandle[] }; result: null };
   /** The core's verdict on a custom rule set, without a mesh: answers null or fails with its SubdivError. */

@@ -45,6 +45,7 @@ export const SHORTCUTS: readonly { keys: string; action: string }[] = [
   { keys: '0 … 9 / I', action: 'Sharpness of the selected creases (I: infinitely sharp)' },
   { keys: 'Ctrl+Z / Ctrl+Shift+Z', action: 'Undo / redo a crease edit' },
   { keys: 'W', action: 'Inspect stencils: click a vertex of level 1 or higher for its parents and weights' },
+  { keys: 'N P O V F', action: 'Halfedge explorer on: next, prev, opposite, around the vertex, around the face' },
   { keys: 'Esc', action: 'Cancel a running step' },
   { keys: 'Ctrl+C', action: 'Copy the view as PNG' },
 ];

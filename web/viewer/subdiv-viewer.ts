@@ -14,6 +14,7 @@
 import type { BufferAttribute } from 'three';
 import type { MeshComparison } from '../core/compare';
 import type { VertexCurvature } from '../core/curvature';
+import type { HalfedgeTable } from '../core/halfedges';
 import type { Inspection, InspectOptions } from '../core/inspect';
 import type {
   BoundaryInterpolation,
@@ -806,6 +807,12 @@ export class SubdivViewer {
   async inspect(k: number, options: InspectOptions): Promise<Inspection | null> {
     if (!this.levels[k]) return null;
     return this.computing(`Inspecting level ${k}…`, () => this.withHandle(k, (h) => this.core.inspect(h, options)));
+  }
+
+  /** The halfedge table of level `k` (CGAL's Surface_mesh numbering), from the worker; null before a load. */
+  async halfedges(k = this.current): Promise<HalfedgeTable | null> {
+    if (!this.levels[k]) return null;
+    return this.withHandle(k, (h) => this.core.halfedges(h));
   }
 
   /** The render buffers of level `k` (null: not computed), as the view draws them. */
