@@ -40,6 +40,7 @@
 #include "file_kind.h"
 #include "mesh_check.h"
 #include "orientation_repair.h"
+#include "parse_failure.h"
 #include "ply_io.h"
 #include "stl_io.h"
 #include "text_writer.h"
@@ -470,12 +471,7 @@ enum class Run_stop {
 std::string at(int line) { return "line " + std::to_string(line) + ": "; }
 using detail::quoted;
 
-Result<Mesh_buffers> parse_fail(int line, const std::string& what) {
-  Result<Mesh_buffers> r;
-  r.status = Status::error(Status_code::parse_error,
-                           (line > 0 ? at(line) : "") + what, line);
-  return r;
-}
+using detail::parse_failure;
 
 /// Reads one coordinate; on failure fills `r` with the reason.
 bool read_coordinate(std::string_view tok, int line, const std::string& what,
@@ -484,10 +480,10 @@ bool read_coordinate(std::string_view tok, int line, const std::string& what,
     case Number::ok:
       return true;
     case Number::not_finite:
-      r = parse_fail(line, what + " is not finite: " + quoted(tok));
+      r = parse_failure(line, what + " is not finite: " + quoted(tok));
       return false;
     case Number::not_number:
-      r = parse_fail(line, what + " is not a number: " + quoted(tok));
+      r = parse_failure(line, what + " is not a number: " + quoted(tok));
       return false;
   }
   return false;
@@ -571,7 +567,7 @@ bool read_sharpness(std::string_view tok, int line, const std::string& tag,
     out = static_cast<float>(v);
     return true;
   }
-  r = parse_fail(line, tag + ": sharpness " + quoted(tok) + " " + problem);
+  r = parse_failure(line, tag + ": sharpness " + quoted(tok) + " " + problem);
   return false;
 }
 
@@ -580,7 +576,7 @@ bool read_sharpness(std::string_view tok, int line, const std::string& tag,
 bool read_tag(const std::vector<std::string_view>& tok, int line,
               Tag_list& tags, Result<Mesh_buffers>& r) {
   const auto fail = [&](const std::string& what) {
-    r = parse_fail(line, what);
+    r = parse_failure(line, what);
     return false;
   };
   if (tok.size() < 3) {
@@ -743,7 +739,7 @@ bool apply_tags(Tag_list&& tags, Mesh_buffers& mesh, Result<Mesh_buffers>& r) {
     const std::size_t limit = t.kind == Tag_kind::hole ? nf : nv;
     for (const long long i : t.indices) {
       if (i >= 0 && static_cast<unsigned long long>(i) < limit) continue;
-      r = parse_fail(
+      r = parse_failure(
           t.line,
           tag + ": " + (t.kind == Tag_kind::hole ? "face " : "vertex ") +
               std::to_string(i) + " is out of range (" +
@@ -782,10 +778,10 @@ bool apply_tags(Tag_list&& tags, Mesh_buffers& mesh, Result<Mesh_buffers>& r) {
           const auto b = static_cast<std::uint32_t>(t.indices[j + 1]);
           const std::uint64_t e = key(a, b);
           if (!std::binary_search(edges.begin(), edges.end(), e)) {
-            r = parse_fail(t.line, tag + ": vertices " + std::to_string(a) +
-                                       " and " + std::to_string(b) +
-                                       " are not joined by an edge of the "
-                                       "mesh");
+            r = parse_failure(t.line, tag + ": vertices " + std::to_string(a) +
+                                          " and " + std::to_string(b) +
+                                          " are not joined by an edge of the "
+                                          "mesh");
             return false;
           }
           const float s =
@@ -889,7 +885,7 @@ Result<Mesh_buffers> read_off(std::string_view text,
   std::vector<std::string_view> tok;
   int line = 0;
   if (!in.next(tok, line))
-    return parse_fail(0, "the file is empty: no OFF header");
+    return parse_failure(0, "the file is empty: no OFF header");
 
   // Header keyword: [ST][C][N][4][n]OFF, optionally followed by the counts.
   std::string_view key = tok[0];
@@ -900,17 +896,17 @@ Result<Mesh_buffers> read_off(std::string_view text,
     if (k.substr(0, 1) == "C") colours = true, k.remove_prefix(1);
     if (k.substr(0, 1) == "N") normals = true, k.remove_prefix(1);
     if (k == "4OFF" || k == "4nOFF") {
-      return parse_fail(line,
-                        "4D OFF (" + std::string(key) +
-                            ") is not supported: SubdivLab reads 3D meshes");
+      return parse_failure(line,
+                           "4D OFF (" + std::string(key) +
+                               ") is not supported: SubdivLab reads 3D meshes");
     }
     if (k == "nOFF") {
-      return parse_fail(line,
-                        "nOFF (" + std::string(key) +
-                            ", dimension given in the file) is not supported");
+      return parse_failure(
+          line, "nOFF (" + std::string(key) +
+                    ", dimension given in the file) is not supported");
     }
     if (k != "OFF") {
-      return parse_fail(
+      return parse_failure(
           line, "unknown OFF header " + quoted(key) +
                     " (expected OFF, COFF, NOFF, CNOFF, STOFF or another "
                     "[ST][C][N]OFF variant)");
@@ -918,35 +914,35 @@ Result<Mesh_buffers> read_off(std::string_view text,
   }
   std::size_t c0 = 1;
   if (tok.size() > 1 && tok[1] == "BINARY") {
-    return parse_fail(line,
-                      "binary OFF is not supported; save the mesh as text OFF");
+    return parse_failure(
+        line, "binary OFF is not supported; save the mesh as text OFF");
   }
   if (tok.size() == 1) {
     if (!in.next(tok, line))
-      return parse_fail(in.last_line(), "file ends before the counts line");
+      return parse_failure(in.last_line(), "file ends before the counts line");
     c0 = 0;
   }
   const std::size_t n_counts = tok.size() - c0;
   if (n_counts < 2 || n_counts > 3) {
-    return parse_fail(line,
-                      "expected the counts 'vertices faces edges', found " +
-                          std::to_string(n_counts) + " values");
+    return parse_failure(line,
+                         "expected the counts 'vertices faces edges', found " +
+                             std::to_string(n_counts) + " values");
   }
   long long nv_ll = 0, nf_ll = 0, ne_ll = 0;
   const char* count_name[3] = {"vertex", "face", "edge"};
   long long* count_val[3] = {&nv_ll, &nf_ll, &ne_ll};
   for (std::size_t i = 0; i < n_counts; ++i) {
     if (!parse_int(tok[c0 + i], *count_val[i]) || *count_val[i] < 0) {
-      return parse_fail(line, std::string(count_name[i]) + " count " +
-                                  quoted(tok[c0 + i]) +
-                                  " is not a non-negative integer");
+      return parse_failure(line, std::string(count_name[i]) + " count " +
+                                     quoted(tok[c0 + i]) +
+                                     " is not a non-negative integer");
     }
   }
   if (nv_ll > 0xfffffffell)
-    return parse_fail(line,
-                      "vertex count " + std::string(tok[c0]) + " is too large");
+    return parse_failure(
+        line, "vertex count " + std::string(tok[c0]) + " is too large");
   if (nf_ll > 0xfffffffell)
-    return parse_fail(
+    return parse_failure(
         line, "face count " + std::string(tok[c0 + 1]) + " is too large");
   const std::size_t nv = static_cast<std::size_t>(nv_ll),
                     nf = static_cast<std::size_t>(nf_ll);
@@ -970,9 +966,9 @@ Result<Mesh_buffers> read_off(std::string_view text,
                              line, stop);
     if (stop == Run_stop::count) break;
     if (stop == Run_stop::text_end) {
-      return parse_fail(in.last_line(), "file ends after " + std::to_string(v) +
-                                            " of " + std::to_string(nv) +
-                                            " vertices");
+      return parse_failure(in.last_line(),
+                           "file ends after " + std::to_string(v) + " of " +
+                               std::to_string(nv) + " vertices");
     }
     in.take_line(tok);
     if (tok.size() < min_values) {
@@ -980,11 +976,11 @@ Result<Mesh_buffers> read_off(std::string_view text,
       if (normals) need += ", a normal";
       if (colours) need += ", a colour";
       if (texture) need += ", texture coordinates";
-      return parse_fail(line, "vertex " + std::to_string(v) + " has " +
-                                  std::to_string(tok.size()) + " values; " +
-                                  std::string(key) + " needs at least " +
-                                  std::to_string(min_values) + " (" + need +
-                                  ")");
+      return parse_failure(line, "vertex " + std::to_string(v) + " has " +
+                                     std::to_string(tok.size()) + " values; " +
+                                     std::string(key) + " needs at least " +
+                                     std::to_string(min_values) + " (" + need +
+                                     ")");
     }
     for (int a = 0; a < 3; ++a) {
       double x = 0;
@@ -1001,9 +997,9 @@ Result<Mesh_buffers> read_off(std::string_view text,
     for (std::size_t i = 3; i < tok.size(); ++i) {
       double x = 0;
       if (parse_double(tok[i], x) == Number::not_number) {
-        return parse_fail(line, "value " + std::to_string(i + 1) +
-                                    " of vertex " + std::to_string(v) +
-                                    " is not a number: " + quoted(tok[i]));
+        return parse_failure(line, "value " + std::to_string(i + 1) +
+                                       " of vertex " + std::to_string(v) +
+                                       " is not a number: " + quoted(tok[i]));
       }
     }
   }
@@ -1013,28 +1009,28 @@ Result<Mesh_buffers> read_off(std::string_view text,
     f += fast_off_face_run(in, fast, nf - f, nv, mesh, face_lines, line, stop);
     if (stop == Run_stop::count) break;
     if (stop == Run_stop::text_end) {
-      return parse_fail(in.last_line(), "file ends after " + std::to_string(f) +
-                                            " of " + std::to_string(nf) +
-                                            " faces");
+      return parse_failure(in.last_line(), "file ends after " +
+                                               std::to_string(f) + " of " +
+                                               std::to_string(nf) + " faces");
     }
     in.take_line(tok);
     long long k = 0;
     if (!parse_int(tok[0], k) || k < 0) {
-      return parse_fail(line, "face " + std::to_string(f) +
-                                  " must start with its vertex count, found " +
-                                  quoted(tok[0]) +
-                                  " (do the header counts match the data?)");
+      return parse_failure(
+          line, "face " + std::to_string(f) +
+                    " must start with its vertex count, found " +
+                    quoted(tok[0]) + " (do the header counts match the data?)");
     }
     const std::size_t listed = tok.size() - 1;
     if (static_cast<unsigned long long>(k) > listed) {
-      return parse_fail(line, "face " + std::to_string(f) + " declares " +
-                                  std::string(tok[0]) +
-                                  " vertices but lists only " +
-                                  std::to_string(listed));
+      return parse_failure(line, "face " + std::to_string(f) + " declares " +
+                                     std::string(tok[0]) +
+                                     " vertices but lists only " +
+                                     std::to_string(listed));
     }
     const std::size_t extra = listed - static_cast<std::size_t>(k);
     if (extra > 4) {
-      return parse_fail(
+      return parse_failure(
           line,
           "face " + std::to_string(f) + " declares " + std::string(tok[0]) +
               " vertices but the line has " + std::to_string(extra) +
@@ -1043,7 +1039,7 @@ Result<Mesh_buffers> read_off(std::string_view text,
     for (std::size_t i = 1; i <= static_cast<std::size_t>(k); ++i) {
       long long index = 0;
       if (!parse_int(tok[i], index)) {
-        return parse_fail(
+        return parse_failure(
             line, "face index " + quoted(tok[i]) + " is not an integer");
       }
       if (index < 0 || static_cast<unsigned long long>(index) >= nv) {
@@ -1060,8 +1056,8 @@ Result<Mesh_buffers> read_off(std::string_view text,
     for (std::size_t i = 1 + static_cast<std::size_t>(k); i < tok.size(); ++i) {
       double x = 0;
       if (parse_double(tok[i], x) == Number::not_number) {
-        return parse_fail(line, "colour value of face " + std::to_string(f) +
-                                    " is not a number: " + quoted(tok[i]));
+        return parse_failure(line, "colour value of face " + std::to_string(f) +
+                                       " is not a number: " + quoted(tok[i]));
       }
     }
     mesh.face_sizes.push_back(static_cast<std::uint32_t>(k));
@@ -1072,9 +1068,10 @@ Result<Mesh_buffers> read_off(std::string_view text,
   in.read_tag_comments();
   while (in.next(tok, line)) {
     if (!in.at_tag_comment()) {
-      return parse_fail(line, "extra data after the " + std::to_string(nf) +
-                                  " faces the header declares (header counts "
-                                  "disagree with the data)");
+      return parse_failure(line,
+                           "extra data after the " + std::to_string(nf) +
+                               " faces the header declares (header counts "
+                               "disagree with the data)");
     }
     Result<Mesh_buffers> r;
     if (!read_tag(tok, line, tags, r)) return r;
@@ -1132,8 +1129,8 @@ Result<Mesh_buffers> read_obj(std::string_view text,
     const std::string_view k = tok[0];
     if (k == "v") {
       if (tok.size() < 4) {
-        return parse_fail(line, "vertex needs 3 coordinates, found " +
-                                    std::to_string(tok.size() - 1));
+        return parse_failure(line, "vertex needs 3 coordinates, found " +
+                                       std::to_string(tok.size() - 1));
       }
       const std::size_t v = mesh.vertex_count() + 1;
       for (int a = 0; a < 3; ++a) {
@@ -1151,9 +1148,9 @@ Result<Mesh_buffers> read_obj(std::string_view text,
       for (std::size_t i = 4; i < tok.size(); ++i) {
         double x = 0;
         if (parse_double(tok[i], x) == Number::not_number) {
-          return parse_fail(line, "value " + std::to_string(i) + " of vertex " +
-                                      std::to_string(v) +
-                                      " is not a number: " + quoted(tok[i]));
+          return parse_failure(line, "value " + std::to_string(i) +
+                                         " of vertex " + std::to_string(v) +
+                                         " is not a number: " + quoted(tok[i]));
         }
       }
     } else if (k == "f") {
@@ -1161,7 +1158,7 @@ Result<Mesh_buffers> read_obj(std::string_view text,
       for (std::size_t i = 1; i < tok.size(); ++i) {
         long long v = 0;
         if (!parse_obj_corner(tok[i], v)) {
-          return parse_fail(
+          return parse_failure(
               line,
               quoted(tok[i]) +
                   " is not a face vertex (expected v, v/vt, v//vn or v/vt/vn)");
@@ -1212,7 +1209,7 @@ Result<Mesh_buffers> read_obj(std::string_view text,
       Result<Mesh_buffers> r;
       if (!read_tag(tok, line, tags, r)) return r;
     } else if (!is_ignored_obj_statement(k)) {
-      return parse_fail(line, "unknown OBJ statement " + quoted(k));
+      return parse_failure(line, "unknown OBJ statement " + quoted(k));
     }
   }
   return finish(std::move(mesh), face_lines, 1, corner_halfedges,
@@ -1316,7 +1313,7 @@ Result<Mesh_buffers> read_text(std::string_view text, Mesh_format format,
       case Mesh_format::stl:
         return detail::read_stl(text, corner_halfedges, options);
     }
-    return parse_fail(0, "unknown mesh format");
+    return parse_failure(0, "unknown mesh format");
   } catch (const std::bad_alloc&) {
     Result<Mesh_buffers> r;
     r.status = Status::error(Status_code::too_large,

@@ -25,6 +25,7 @@
 #include "file_kind.h"
 #include "mesh_check.h"
 #include "orientation_repair.h"
+#include "parse_failure.h"
 #include "text_writer.h"
 
 namespace subdivlab::detail {
@@ -97,14 +98,6 @@ struct Ply_element {
 
 enum class Encoding { ascii, little, big };
 
-Result<Mesh_buffers> fail(int line, const std::string& what) {
-  Result<Mesh_buffers> r;
-  r.status = Status::error(
-      Status_code::parse_error,
-      (line > 0 ? "line " + std::to_string(line) + ": " : "") + what, line);
-  return r;
-}
-
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> out;
   std::size_t i = 0;
@@ -141,7 +134,7 @@ Result<Mesh_buffers> read_header(std::string_view bytes, Ply_header& h) {
   bool have_format = false;
   for (;;) {
     if (pos >= bytes.size())
-      return fail(line, "the header ends without an end_header line");
+      return parse_failure(line, "the header ends without an end_header line");
     std::size_t eol = bytes.find('\n', pos);
     if (eol == std::string_view::npos) eol = bytes.size();
     std::string_view text = bytes.substr(pos, eol - pos);
@@ -150,7 +143,7 @@ Result<Mesh_buffers> read_header(std::string_view bytes, Ply_header& h) {
     ++line;
     if (line == 1) {
       if (text != "ply")
-        return fail(
+        return parse_failure(
             1, "a PLY file starts with the line 'ply', not " + quoted(text));
       continue;
     }
@@ -158,15 +151,15 @@ Result<Mesh_buffers> read_header(std::string_view bytes, Ply_header& h) {
     if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
     if (tok[0] == "end_header") {
       if (tok.size() != 1)
-        return fail(line, "end_header takes nothing after it");
+        return parse_failure(line, "end_header takes nothing after it");
       break;
     }
     if (tok[0] == "format") {
       if (tok.size() != 3 || tok[2] != "1.0")
-        return fail(line,
-                    "expected 'format <ascii | binary_little_endian | "
-                    "binary_big_endian> 1.0', not " +
-                        quoted(text));
+        return parse_failure(line,
+                             "expected 'format <ascii | binary_little_endian | "
+                             "binary_big_endian> 1.0', not " +
+                                 quoted(text));
       if (tok[1] == "ascii") {
         h.encoding = Encoding::ascii;
       } else if (tok[1] == "binary_little_endian") {
@@ -174,63 +167,65 @@ Result<Mesh_buffers> read_header(std::string_view bytes, Ply_header& h) {
       } else if (tok[1] == "binary_big_endian") {
         h.encoding = Encoding::big;
       } else {
-        return fail(line, "unknown PLY format " + quoted(tok[1]) +
-                              " (ascii, binary_little_endian or "
-                              "binary_big_endian)");
+        return parse_failure(line, "unknown PLY format " + quoted(tok[1]) +
+                                       " (ascii, binary_little_endian or "
+                                       "binary_big_endian)");
       }
       have_format = true;
       continue;
     }
     if (!have_format)
-      return fail(line, "the 'format' line must come before " + quoted(tok[0]));
+      return parse_failure(
+          line, "the 'format' line must come before " + quoted(tok[0]));
     if (tok[0] == "element") {
       if (tok.size() != 3)
-        return fail(line,
-                    "expected 'element <name> <count>', not " + quoted(text));
+        return parse_failure(
+            line, "expected 'element <name> <count>', not " + quoted(text));
       Ply_element e;
       e.name = tok[1];
       e.line = line;
       const auto [end, ec] = std::from_chars(
           tok[2].data(), tok[2].data() + tok[2].size(), e.count);
       if (ec != std::errc() || end != tok[2].data() + tok[2].size())
-        return fail(line, "the count of element " + quoted(e.name) + " is " +
-                              quoted(tok[2]) +
-                              ", not a whole number 0 or more");
+        return parse_failure(line, "the count of element " + quoted(e.name) +
+                                       " is " + quoted(tok[2]) +
+                                       ", not a whole number 0 or more");
       h.elements.push_back(e);
       continue;
     }
     if (tok[0] == "property") {
       if (h.elements.empty())
-        return fail(line, "'property' before any 'element'");
+        return parse_failure(line, "'property' before any 'element'");
       Ply_property p;
       std::size_t t = 1;
       if (tok.size() > 1 && tok[1] == "list") {
         p.list = true;
         if (tok.size() != 5)
-          return fail(line,
-                      "expected 'property list <count type> <index "
-                      "type> <name>', not " +
-                          quoted(text));
+          return parse_failure(line,
+                               "expected 'property list <count type> <index "
+                               "type> <name>', not " +
+                                   quoted(text));
         if (!find_type(tok[2], p.count_type))
-          return fail(line, "unknown PLY type " + quoted(tok[2]));
+          return parse_failure(line, "unknown PLY type " + quoted(tok[2]));
         if (!is_integer(p.count_type))
-          return fail(line, "the list " + quoted(tok[4]) +
-                                " has a count of "
-                                "type " +
-                                quoted(tok[2]) +
-                                "; a list count must be an integer type");
+          return parse_failure(line,
+                               "the list " + quoted(tok[4]) +
+                                   " has a count of "
+                                   "type " +
+                                   quoted(tok[2]) +
+                                   "; a list count must be an integer type");
         t = 3;
       } else if (tok.size() != 3) {
-        return fail(line,
-                    "expected 'property <type> <name>', not " + quoted(text));
+        return parse_failure(
+            line, "expected 'property <type> <name>', not " + quoted(text));
       }
       if (!find_type(tok[t], p.type))
-        return fail(line, "unknown PLY type " + quoted(tok[t]));
+        return parse_failure(line, "unknown PLY type " + quoted(tok[t]));
       p.name = tok[t + 1];
       h.elements.back().properties.push_back(p);
       continue;
     }
-    return fail(line, "unknown header line " + quoted(text));
+    return parse_failure(line, "unknown header line " + quoted(text));
   }
   h.data_begin = std::min(pos, bytes.size());
   h.data_line = line + 1;
@@ -254,11 +249,11 @@ Result<Mesh_buffers> find_layout(const Ply_header& h, Ply_layout& l) {
       l.face_element = e;
   }
   if (l.vertex_element == none)
-    return fail(0, "the header declares no 'vertex' element");
+    return parse_failure(0, "the header declares no 'vertex' element");
   if (l.face_element == none)
-    return fail(0,
-                "the header declares no 'face' element: a point cloud "
-                "is not a polygon mesh");
+    return parse_failure(0,
+                         "the header declares no 'face' element: a point cloud "
+                         "is not a polygon mesh");
   const Ply_element& v = h.elements[l.vertex_element];
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
@@ -266,14 +261,14 @@ Result<Mesh_buffers> find_layout(const Ply_header& h, Ply_layout& l) {
     for (std::size_t p = 0; p < v.properties.size(); ++p) {
       if (v.properties[p].name != axes[a]) continue;
       if (v.properties[p].list)
-        return fail(v.line, std::string("the vertex property '") + axes[a] +
-                                "' is a list, not a number");
+        return parse_failure(v.line, std::string("the vertex property '") +
+                                         axes[a] + "' is a list, not a number");
       l.xyz[a] = p;
       break;
     }
     if (l.xyz[a] == none)
-      return fail(v.line, std::string("the vertex element has no '") + axes[a] +
-                              "' property");
+      return parse_failure(v.line, std::string("the vertex element has no '") +
+                                       axes[a] + "' property");
   }
   const Ply_element& f = h.elements[l.face_element];
   l.indices = none;
@@ -282,19 +277,22 @@ Result<Mesh_buffers> find_layout(const Ply_header& h, Ply_layout& l) {
         f.properties[p].name != "vertex_index")
       continue;
     if (!f.properties[p].list)
-      return fail(f.line, "the face property " + quoted(f.properties[p].name) +
-                              " is a single number, not a list of vertices");
+      return parse_failure(f.line,
+                           "the face property " + quoted(f.properties[p].name) +
+                               " is a single number, not a list of vertices");
     if (!is_integer(f.properties[p].type))
-      return fail(f.line, "the face list " + quoted(f.properties[p].name) +
-                              " holds floating-point numbers; vertex "
-                              "indices must be of an integer type");
+      return parse_failure(f.line, "the face list " +
+                                       quoted(f.properties[p].name) +
+                                       " holds floating-point numbers; vertex "
+                                       "indices must be of an integer type");
     l.indices = p;
     break;
   }
   if (l.indices == none)
-    return fail(f.line, "the face element has no 'vertex_indices' list");
+    return parse_failure(f.line,
+                         "the face element has no 'vertex_indices' list");
   if (v.count > 0xFFFFFFFFull)
-    return fail(v.line, "more vertices than 32-bit indices can name");
+    return parse_failure(v.line, "more vertices than 32-bit indices can name");
   return {};
 }
 
@@ -480,18 +478,18 @@ Result<Mesh_buffers> value_fail(const Value_source& in, const Ply_element& e,
       std::string(part) + quoted(p.name) + " of " + element_name(e, i);
   if (in.ascii()) {
     if (in.bad())
-      return fail(in.line(), quoted(in.token()) + " is not a " +
-                                 std::string(type_label(p, part)) + " for " +
-                                 what);
-    return fail(in.current_line(), "the data ends before " + what +
-                                       " (the header declares " +
-                                       std::to_string(e.count) + ")");
+      return parse_failure(in.line(), quoted(in.token()) + " is not a " +
+                                          std::string(type_label(p, part)) +
+                                          " for " + what);
+    return parse_failure(in.current_line(), "the data ends before " + what +
+                                                " (the header declares " +
+                                                std::to_string(e.count) + ")");
   }
-  return fail(0, "byte " + std::to_string(in.offset()) +
-                     ": the data ends before " + what +
-                     " (the header "
-                     "declares " +
-                     std::to_string(e.count) + ")");
+  return parse_failure(0, "byte " + std::to_string(in.offset()) +
+                              ": the data ends before " + what +
+                              " (the header "
+                              "declares " +
+                              std::to_string(e.count) + ")");
 }
 
 }  // namespace
@@ -512,11 +510,12 @@ Result<Mesh_buffers> read_ply(std::string_view bytes,
     const std::size_t min = min_element_bytes(e, ascii);
     if (min == 0 || e.count == 0) continue;
     if (e.count > left / min) {
-      return fail(e.line, "the header declares " + std::to_string(e.count) +
-                              " " + quoted(e.name) + " elements of at least " +
-                              std::to_string(min) + " bytes each, but only " +
-                              std::to_string(bytes.size() - h.data_begin) +
-                              " bytes of data follow");
+      return parse_failure(
+          e.line, "the header declares " + std::to_string(e.count) + " " +
+                      quoted(e.name) + " elements of at least " +
+                      std::to_string(min) + " bytes each, but only " +
+                      std::to_string(bytes.size() - h.data_begin) +
+                      " bytes of data follow");
     }
     left -= static_cast<std::size_t>(e.count) * min;
   }
@@ -543,7 +542,7 @@ Result<Mesh_buffers> read_ply(std::string_view bytes,
             for (int a = 0; a < 3; ++a) {
               if (l.xyz[a] != pi) continue;
               if (!std::isfinite(v))
-                return fail(
+                return parse_failure(
                     in.ascii() ? in.line() : 0,
                     (in.ascii()
                          ? ""
@@ -560,7 +559,7 @@ Result<Mesh_buffers> read_ply(std::string_view bytes,
         if (!in.next(p.count_type, v))
           return value_fail(in, e, i, p, "the count of list ");
         if (v < 0)
-          return fail(
+          return parse_failure(
               in.ascii() ? in.line() : 0,
               (in.ascii() ? "" : "byte " + std::to_string(in.offset()) + ": ") +
                   "the list " + quoted(p.name) + " of " + element_name(e, i) +
@@ -568,17 +567,18 @@ Result<Mesh_buffers> read_ply(std::string_view bytes,
         const auto count = static_cast<std::uint64_t>(v);
         const int first_line = in.ascii() ? in.line() : 0;
         if (!in.ascii() && count > in.remaining() / type_size(p.type))
-          return fail(0, "byte " + std::to_string(in.offset()) + ": the list " +
-                             quoted(p.name) + " of " + element_name(e, i) +
-                             " has " + std::to_string(count) +
-                             " entries, more than the data holds");
+          return parse_failure(0, "byte " + std::to_string(in.offset()) +
+                                      ": the list " + quoted(p.name) + " of " +
+                                      element_name(e, i) + " has " +
+                                      std::to_string(count) +
+                                      " entries, more than the data holds");
         const bool indices = is_face && pi == l.indices;
         for (std::uint64_t k = 0; k < count; ++k) {
           if (!in.next(p.type, v))
             return value_fail(in, e, i, p, "an entry of list ");
           if (!indices) continue;
           if (v < 0)
-            return fail(
+            return parse_failure(
                 first_line,
                 (in.ascii() ? ""
                             : "byte " + std::to_string(in.offset()) + ": ") +
@@ -590,7 +590,8 @@ Result<Mesh_buffers> read_ply(std::string_view bytes,
         }
         if (indices) {
           if (count > 0xFFFFFFFFull)
-            return fail(first_line, element_name(e, i) + " is too large");
+            return parse_failure(first_line,
+                                 element_name(e, i) + " is too large");
           mesh.face_sizes.push_back(static_cast<std::uint32_t>(count));
           if (ascii) face_lines.push_back(first_line);
         }
@@ -599,14 +600,15 @@ Result<Mesh_buffers> read_ply(std::string_view bytes,
     }
   }
   if (!in.rest_is_blank()) {
-    return ascii ? fail(in.line(),
-                        "data after the last element the header "
-                        "declares: " +
-                            quoted(in.token()))
-                 : fail(0, "byte " + std::to_string(in.offset()) + ": " +
-                               std::to_string(in.remaining()) +
-                               " bytes after the last element the header "
-                               "declares");
+    return ascii ? parse_failure(in.line(),
+                                 "data after the last element the header "
+                                 "declares: " +
+                                     quoted(in.token()))
+                 : parse_failure(0,
+                                 "byte " + std::to_string(in.offset()) + ": " +
+                                     std::to_string(in.remaining()) +
+                                     " bytes after the last element the header "
+                                     "declares");
   }
   Check_naming naming;
   if (ascii) naming.face_lines = &face_lines;

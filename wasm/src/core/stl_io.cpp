@@ -21,6 +21,7 @@
 #include "file_kind.h"
 #include "mesh_check.h"
 #include "orientation_repair.h"
+#include "parse_failure.h"
 #include "text_writer.h"
 
 namespace subdivlab::detail {
@@ -39,14 +40,6 @@ float le_float(const char* p) {
   float f;
   std::memcpy(&f, &bits, 4);
   return f;
-}
-
-Result<Mesh_buffers> fail(int line, const std::string& what) {
-  Result<Mesh_buffers> r;
-  r.status = Status::error(
-      Status_code::parse_error,
-      (line > 0 ? "line " + std::to_string(line) + ": " : "") + what, line);
-  return r;
 }
 
 /// Joins corners at exactly equal coordinates (+0 and -0 alike) into one
@@ -128,11 +121,11 @@ Result<Mesh_buffers> read_binary(std::string_view bytes,
       for (int a = 0; a < 3; ++a) {
         p[a] = le_float(rec + 12 + 12 * c + 4 * a);
         if (!std::isfinite(p[a]))
-          return fail(0, "byte " + std::to_string(at + 12 + 12 * c + 4 * a) +
-                             ": corner " + std::to_string(c + 1) +
-                             " of triangle " + std::to_string(t) + " (of " +
-                             std::to_string(n) +
-                             ") has a coordinate that is not a finite number");
+          return parse_failure(
+              0, "byte " + std::to_string(at + 12 + 12 * c + 4 * a) +
+                     ": corner " + std::to_string(c + 1) + " of triangle " +
+                     std::to_string(t) + " (of " + std::to_string(n) +
+                     ") has a coordinate that is not a finite number");
       }
       corners[c] = weld.vertex(p);
     }
@@ -194,15 +187,17 @@ Result<Mesh_buffers> read_ascii(std::string_view text,
   const auto expect = [&](std::string_view want, std::string_view where) {
     const std::string_view w = in.next();
     if (w == want) return Result<Mesh_buffers>{};
-    return fail(in.line(), "expected '" + std::string(want) + "' " +
-                               std::string(where) + ", not " +
-                               (w.empty() ? std::string("the end of the file")
-                                          : quoted(w)));
+    return parse_failure(
+        in.line(),
+        "expected '" + std::string(want) + "' " + std::string(where) +
+            ", not " +
+            (w.empty() ? std::string("the end of the file") : quoted(w)));
   };
   std::string_view word = in.next();
   if (word != "solid")
-    return fail(in.line(),
-                "an ASCII STL file starts with 'solid', not " + quoted(word));
+    return parse_failure(
+        in.line(),
+        "an ASCII STL file starts with 'solid', not " + quoted(word));
   in.skip_line();
   std::vector<std::uint32_t> corners;
   for (;;) {
@@ -212,18 +207,19 @@ Result<Mesh_buffers> read_ascii(std::string_view text,
       word = in.next();
       if (word.empty()) break;
       if (word != "solid")
-        return fail(in.line(),
-                    "expected 'solid' or the end of the file after "
-                    "'endsolid', not " +
-                        quoted(word));
+        return parse_failure(in.line(),
+                             "expected 'solid' or the end of the file after "
+                             "'endsolid', not " +
+                                 quoted(word));
       in.skip_line();
       continue;
     }
     if (word != "facet")
-      return fail(in.line(), "expected 'facet' or 'endsolid', not " +
-                                 (word.empty() ? std::string("the end of the "
-                                                             "file")
-                                               : quoted(word)));
+      return parse_failure(in.line(),
+                           "expected 'facet' or 'endsolid', not " +
+                               (word.empty() ? std::string("the end of the "
+                                                           "file")
+                                             : quoted(word)));
     const int facet_line = in.line();
     Result<Mesh_buffers> r = expect("normal", "after 'facet'");
     if (!r.ok()) return r;
@@ -235,10 +231,11 @@ Result<Mesh_buffers> read_ascii(std::string_view text,
       const auto [end, ec] =
           fast_float::from_chars(w.data(), w.data() + w.size(), v);
       if (w.empty() || ec != std::errc() || end != w.data() + w.size())
-        return fail(in.line(),
-                    "the facet normal's " + std::string(1, "xyz"[a]) + " is " +
-                        (w.empty() ? std::string("missing") : quoted(w)) +
-                        ", not a number");
+        return parse_failure(
+            in.line(), "the facet normal's " + std::string(1, "xyz"[a]) +
+                           " is " +
+                           (w.empty() ? std::string("missing") : quoted(w)) +
+                           ", not a number");
     }
     r = expect("outer", "after the facet normal");
     if (!r.ok()) return r;
@@ -249,10 +246,11 @@ Result<Mesh_buffers> read_ascii(std::string_view text,
       word = in.next();
       if (word == "endloop") break;
       if (word != "vertex")
-        return fail(in.line(), "expected 'vertex' or 'endloop', not " +
-                                   (word.empty() ? std::string("the end of "
-                                                               "the file")
-                                                 : quoted(word)));
+        return parse_failure(in.line(),
+                             "expected 'vertex' or 'endloop', not " +
+                                 (word.empty() ? std::string("the end of "
+                                                             "the file")
+                                               : quoted(word)));
       double p[3];
       for (int a = 0; a < 3; ++a) {
         const std::string_view w = in.next();
@@ -261,20 +259,21 @@ Result<Mesh_buffers> read_ascii(std::string_view text,
         const auto [end, ec] =
             fast_float::from_chars(b, w.data() + w.size(), p[a]);
         if (w.empty() || ec != std::errc() || end != w.data() + w.size())
-          return fail(in.line(),
-                      std::string("the vertex's ") + "xyz"[a] + " is " +
-                          (w.empty() ? std::string("missing") : quoted(w)) +
-                          ", not a number");
+          return parse_failure(
+              in.line(), std::string("the vertex's ") + "xyz"[a] + " is " +
+                             (w.empty() ? std::string("missing") : quoted(w)) +
+                             ", not a number");
         if (!std::isfinite(p[a]))
-          return fail(in.line(), std::string("the vertex's ") + "xyz"[a] +
-                                     " is not finite: " + quoted(w));
+          return parse_failure(in.line(), std::string("the vertex's ") +
+                                              "xyz"[a] +
+                                              " is not finite: " + quoted(w));
       }
       corners.push_back(weld.vertex(p));
     }
     if (corners.size() < 3)
-      return fail(facet_line, "the facet has " +
-                                  std::to_string(corners.size()) +
-                                  " vertices; a triangle has 3");
+      return parse_failure(facet_line, "the facet has " +
+                                           std::to_string(corners.size()) +
+                                           " vertices; a triangle has 3");
     r = expect("endfacet", "after 'endloop'");
     if (!r.ok()) return r;
     const std::size_t before = dropped;
@@ -318,11 +317,12 @@ Result<Mesh_buffers> read_stl(std::string_view bytes,
   if (first != std::string_view::npos && bytes.substr(first, 5) == "solid")
     return read_ascii(bytes, corner_halfedges, options);
   if (bytes.size() < header_bytes + 4)
-    return fail(0, "the file has " + std::to_string(bytes.size()) +
-                       " bytes: too short for a binary STL (84 bytes and "
-                       "more) and it does not start with 'solid' (ASCII STL)");
+    return parse_failure(
+        0, "the file has " + std::to_string(bytes.size()) +
+               " bytes: too short for a binary STL (84 bytes and "
+               "more) and it does not start with 'solid' (ASCII STL)");
   const std::uint64_t n = le32(bytes.data() + header_bytes);
-  return fail(
+  return parse_failure(
       0, "byte 80: a binary STL of " + std::to_string(n) +
              " triangles has 84 + 50 \u00d7 " + std::to_string(n) + " = " +
              std::to_string(84 + 50 * n) + " bytes, but the file has " +
