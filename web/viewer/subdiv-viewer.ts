@@ -42,11 +42,14 @@ import {
   type WorkerClient,
 } from '../core/worker-client';
 import { fanPolygons } from '../render/fan-polygons';
+import { buildFigure, type Figure } from '../render/figure';
+import { figureEps } from '../render/figure-eps';
+import { figurePdf } from '../render/figure-pdf';
 import { CANONICAL_VIEWS, type CanonicalView } from '../render/fit';
 import { LevelGraphics, sharpnessColor } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
-import { exportSvg } from '../render/svg-export';
+import { figureSvg } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
 import { CurvatureShading } from './curvature-shading';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
@@ -605,6 +608,21 @@ export class SubdivViewer {
 
   /** SVG of the view: camera-facing polygons back to front, and the overlays shown. */
   exportSvg(transparent = false): string {
+    return figureSvg(this.figure(transparent));
+  }
+
+  /** The same figure as {@link exportSvg}, as a one-page PDF titled `title`. */
+  exportPdf(transparent = false, title?: string): Uint8Array {
+    return figurePdf(this.figure(transparent), title);
+  }
+
+  /** The same figure as {@link exportSvg}, as EPS (opaque: fading lines mixed with what lies under them). */
+  exportEps(transparent = false, title?: string): string {
+    return figureEps(this.figure(transparent), title);
+  }
+
+  /** The view as a vector figure (render/figure.ts), in any format. */
+  private figure(transparent: boolean): Figure {
     const { buffers, controlEdges, tags } = this.requireLevel().data;
     const base = this.levels[0].data.buffers;
     // The polygons as the core fanned them: the shown level's, in float32.
@@ -630,7 +648,7 @@ export class SubdivViewer {
           color,
         }))
       : [];
-    return exportSvg({
+    return buildFigure({
       mesh,
       camera: this.view.camera,
       ...this.view.size,
