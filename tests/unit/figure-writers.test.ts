@@ -6,10 +6,11 @@
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { inflateSync } from 'node:zlib';
 import { describe, expect, it } from 'vitest';
 import type { Figure } from '../../web/render/figure';
 import { figureEps } from '../../web/render/figure-eps';
-import { figureContentStream, figurePdf } from '../../web/render/figure-pdf';
+import { figureContentStream, figurePdf, PLAIN_STREAM_BYTES } from '../../web/render/figure-pdf';
 import { figureSvg } from '../../web/render/svg-export';
 import { pixel, rasterEps, rasterPdf } from './figure-raster';
 
@@ -99,6 +100,42 @@ describe('figure writers', () => {
     const length = Number(/\/Length (\d+) >>\nstream\n/.exec(text)?.[1]);
     const start = text.indexOf('stream\n') + 7;
     expect(text.slice(start + length)).toMatch(/^endstream\n/);
+  });
+
+  it('PDF: a long content stream is deflated, inflates to the same operators and renders', () => {
+    // A checkerboard of 160 × 120 squares, each a polygon: about 1 MB of operators.
+    const polygons = [];
+    for (let y = 0; y < 120; y++) {
+      for (let x = 0; x < 160; x++) {
+        const [a, b] = [5 * x, 5 * y];
+        polygons.push({
+          points: [a, b, a + 5, b, a + 5, b + 5, a, b + 5],
+          fill: (x + y) % 2 ? '#000000' : '#ffff00',
+        });
+      }
+    }
+    const board: Figure = {
+      width: 800,
+      height: 600,
+      background: null,
+      layers: [{ kind: 'polygons', id: 'faces', polygons, stroke: null }],
+    };
+    const plain = figureContentStream(board, () => 'GS0');
+    expect(plain.length).toBeGreaterThan(PLAIN_STREAM_BYTES);
+    const bytes = figurePdf(board);
+    const text = Buffer.from(bytes).toString('latin1');
+    const header = /<< \/Length (\d+) \/Filter \/FlateDecode >>\nstream\n/.exec(text);
+    expect(header).not.toBeNull();
+    const start = (header?.index ?? 0) + (header?.[0].length ?? 0);
+    const stream = bytes.subarray(start, start + Number(header?.[1]));
+    expect(inflateSync(stream).toString('latin1')).toBe(plain);
+    expect(bytes.length).toBeLessThan(plain.length / 4);
+    const dir = mkdtempSync(join(tmpdir(), 'figure-board-'));
+    writeFileSync(join(dir, 'board.pdf'), bytes);
+    const r = rasterPdf(join(dir, 'board.pdf'), join(dir, 'board'));
+    expect(pixel(r, 2, 2)).toEqual([255, 255, 0]);
+    expect(pixel(r, 7, 2)).toEqual([0, 0, 0]);
+    expect(pixel(r, 797, 597)).toEqual([255, 255, 0]);
   });
 
   it('EPS: header, BoundingBox, one line per polygon with the faded stroke mixed into its fill', () => {

@@ -12,10 +12,15 @@
  * cross-reference table; written by hand the content stream is exactly the
  * figure's (tests read its operators), the bytes are the same on every run
  * (no dates, no ids) and neither the app nor the CLI carries a PDF library.
- * The stream is left uncompressed: readable, and a few hundred kilobytes
- * for a level with thousands of faces.
+ * A content stream up to {@link PLAIN_STREAM_BYTES} is left uncompressed
+ * (readable: a level with a thousand faces); a longer one is deflated with
+ * the fflate that three.js ships (a bunny of 130 000 faces: 9 MB plain).
  */
+import { zlibSync } from 'three/addons/libs/fflate.module.js';
 import { type Figure, type FigureStroke, figureNumber as n, rgbOf } from './figure';
+
+/** Content streams longer than this (bytes) are Flate-compressed. */
+export const PLAIN_STREAM_BYTES = 256 * 1024;
 
 /** Bézier handle length of a quarter circle, as a share of its radius. */
 const KAPPA = 0.5522847498;
@@ -93,13 +98,16 @@ export function figurePdf(figure: Figure, title = 'SubdivLab figure'): Uint8Arra
     if (!alphas.includes(a)) alphas.push(a);
     return `GS${alphas.indexOf(a)}`;
   };
-  const content = figureContentStream(figure, opacity);
+  const plain = figureContentStream(figure, opacity);
+  const deflate = plain.length > PLAIN_STREAM_BYTES;
+  // Strings of bytes (one character each) from here on, so that lengths are byte offsets.
+  const content = deflate ? byteString(zlibSync(Uint8Array.from(plain, (c) => c.charCodeAt(0)))) : plain;
   const states = alphas.map((a, i) => `/GS${i} << /Type /ExtGState /CA ${a} >>`).join(' ');
   const objects = [
     '<< /Type /Catalog /Pages 2 0 R >>',
     '<< /Type /Pages /Kids [3 0 R] /Count 1 >>',
     `<< /Type /Page /Parent 2 0 R /MediaBox [0 0 ${n(figure.width)} ${n(figure.height)}] /Contents 4 0 R /Resources << /ExtGState << ${states} >> >> >>`,
-    `<< /Length ${content.length} >>\nstream\n${content}endstream`,
+    `<< /Length ${content.length}${deflate ? ' /Filter /FlateDecode' : ''} >>\nstream\n${content}${deflate ? '\n' : ''}endstream`,
     `<< /Title ${pdfString(title)} /Producer (SubdivLab) >>`,
   ];
   // The second line's bytes above 127 tell file transfers the file is binary (PDF 1.4, 7.5.2).
@@ -113,6 +121,13 @@ export function figurePdf(figure: Figure, title = 'SubdivLab figure'): Uint8Arra
   text += `xref\n0 ${objects.length + 1}\n0000000000 65535 f \n`;
   for (const offset of offsets) text += `${offset.toString().padStart(10, '0')} 00000 n \n`;
   text += `trailer\n<< /Size ${objects.length + 1} /Root 1 0 R /Info 5 0 R >>\nstartxref\n${xref}\n%%EOF\n`;
-  // One byte per character: the text is ASCII but for the four marker bytes.
+  // One byte per character.
   return Uint8Array.from(text, (c) => c.charCodeAt(0));
+}
+
+/** Bytes as a string of one character each (0–255), in chunks: a long stream overflows one call's arguments. */
+function byteString(bytes: Uint8Array): string {
+  let out = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) out += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return out;
 }
