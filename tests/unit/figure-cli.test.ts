@@ -20,12 +20,15 @@ import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
+import { initNode } from '../../web/core/init-node';
+import { parseMesh, subdivide } from '../../web/core/subdiv-core';
 import { drawnPixels, pixel, rasterEps, rasterPdf, shareWithin } from './figure-raster';
 import { FIXTURES_DIR } from './test-helpers';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const BIN = join(ROOT, 'bin', 'subdiv.mjs');
 const CUBE = join(FIXTURES_DIR, 'cube.off');
+const CREASED = join(FIXTURES_DIR, 'cube-creased.obj');
 const BACKGROUND: [number, number, number] = [0xf3, 0xf4, 0xf6];
 
 function subdiv(args: string[]) {
@@ -163,6 +166,23 @@ describe('subdiv figure', () => {
     const clear = readFileSync(join(work, 'clear.pdf'), 'latin1');
     expect(clear).not.toContain(' re f');
     expect(clear).toContain('% control-mesh-back');
+  });
+
+  it("a tagged file's creases and corners as the app shows them, and --curves: every one drawn, in front or behind", async () => {
+    await initNode();
+    const level = subdivide(parseMesh(readFileSync(CREASED), 'obj'), { scheme: 'catmull-clark', levels: 2 });
+    const tags = level.tags;
+    expect(tags?.creaseSharpness.length).toBeGreaterThan(0);
+    const r = subdiv(['figure', CREASED, '--levels', '2', '--curves', '-o', join(work, 'creased.svg')]);
+    expect(r.status).toBe(0);
+    const svg = readFileSync(join(work, 'creased.svg'), 'utf8');
+    const segments = (prefix: string) =>
+      [...svg.matchAll(/<path id="([^"]+)"[^>]* d="([^"]*)"\/>/g)]
+        .filter((m) => m[1].startsWith(prefix))
+        .reduce((sum, m) => sum + (m[2].match(/M/g) ?? []).length, 0);
+    expect(segments('creases-')).toBe(tags?.creaseSharpness.length);
+    expect(segments('control-curves')).toBe(level.controlEdges.length / 2);
+    expect((svg.match(/<circle /g) ?? []).length).toBe(tags?.cornerSharpness.length);
   });
 
   it('bad usage: unknown view or mode, another extension, no -o: exit 2 with the reason', () => {

@@ -15,7 +15,7 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
        subdiv inspect INPUT [--self-intersections] [--sphere] [--hull] [--width] [--all]
                      [--scheme S --levels K] ...
        subdiv halfedges INPUT [--scheme S --levels K] ...
-       subdiv figure INPUT [--scheme S --levels K] [--view V] [--mode M] [--control-mesh]
+       subdiv figure INPUT [--scheme S --levels K] [--view V] [--mode M] [--control-mesh] [--curves]
                     [--size WxH] [--line-width W] [--transparent] -o OUT.svg|.pdf|.eps
 
   INPUT            an OFF, OBJ, PLY or STL mesh (format from the extension; otherwise from the
@@ -81,9 +81,11 @@ opaque, fading lines mixed with what lies under them). --view front, top, side o
 app's canonical views, framed by its Fit), or a camera as the app's links write it
 ("px,py,pz,tx,ty,tz,ux,uy,uz"); default the app's first view. --mode edges (default: shaded
 polygons with their edges), flat (no edges; smooth is the same), wireframe (every edge, no
-faces). --control-mesh draws the cage; --size WxH in pixels, a point each in PDF and EPS
-(default 800x600); --line-width W the app's line width (default 1); --transparent leaves out
-the background. It prints the output file, the polygons drawn and the camera as JSON.
+faces). --control-mesh draws the cage, --curves the control-edge curves (primal schemes); a
+tagged file's creases and corners are drawn as the app shows them. --size WxH in pixels, a
+point each in PDF and EPS (default 800x600); --line-width W the app's line width (default 1);
+--transparent leaves out the background. It prints the output file, the polygons drawn and
+the camera as JSON.
 
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
@@ -190,7 +192,7 @@ export function parseCliArgs(argv: string[]): CliArgs {
             ? 'figure'
             : 'subdivide';
   const computations = ['self-intersections', 'sphere', 'hull', 'width', 'all'] as const;
-  const drawing = ['view', 'mode', 'control-mesh', 'size', 'line-width', 'transparent'] as const;
+  const drawing = ['view', 'mode', 'control-mesh', 'curves', 'size', 'line-width', 'transparent'] as const;
   const refused = {
     stencil: ['output', 'stats', 'levels', 'tolerance', ...computations, ...drawing],
     check: ['output', 'stats', 'level', 'vertex', ...computations, ...drawing],
@@ -295,6 +297,7 @@ function figureOptions(values: ReturnType<typeof parse>['values']): FigureOption
     view,
     mode: mode as FigureMode,
     controlMesh: values['control-mesh'] === true,
+    curves: values.curves === true,
     width,
     height,
     lineWidth,
@@ -364,6 +367,7 @@ function parse(argv: string[]) {
       view: { type: 'string' },
       mode: { type: 'string' },
       'control-mesh': { type: 'boolean' },
+      curves: { type: 'boolean' },
       size: { type: 'string' },
       'line-width': { type: 'string' },
       transparent: { type: 'boolean' },

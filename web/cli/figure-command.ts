@@ -9,7 +9,7 @@
 import { PerspectiveCamera, Vector3 } from 'three';
 import type { LevelView } from '../core/mesh';
 import { fanPolygons } from '../render/fan-polygons';
-import { buildFigure, type Figure, type FigureFormat, type FigureStyle } from '../render/figure';
+import { buildFigure, type Figure, type FigureFormat, type FigureStyle, tagOverlays } from '../render/figure';
 import { figureEps } from '../render/figure-eps';
 import { figurePdf } from '../render/figure-pdf';
 import { CANONICAL_VIEWS, type CanonicalView, DEFAULT_VIEW_DIRECTION, fitCamera } from '../render/fit';
@@ -30,6 +30,8 @@ export interface FigureOptions {
   view: CanonicalView | ViewState | null;
   mode: FigureMode;
   controlMesh: boolean;
+  /** The control-edge curves (primal schemes: the level's edges on the cage's edges). */
+  curves: boolean;
   width: number;
   height: number;
   /** The line-width setting (CSS pixels, line-style.ts). */
@@ -76,12 +78,16 @@ export function renderFigure(
     projectedLength(meanSegmentLength(buffers.positions, buffers.edges), distance, camera, height),
     options.lineWidth,
   );
+  const { controlEdges, tags } = level.mesh;
   const figure = buildFigure({
     mesh,
     camera,
     width,
     height,
     control: controlLines,
+    curves: options.curves ? { positions: buffers.positions, edges: controlEdges, faces: mesh } : null,
+    // The file's creases and corners, as the app shows them unless switched off.
+    ...(tags ? tagOverlays(tags, buffers.positions, mesh) : {}),
     background: !options.transparent,
     lineWidth: options.lineWidth,
     edgeOpacity: opacity,

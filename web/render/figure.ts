@@ -12,6 +12,8 @@
  * only spell the layers out.
  */
 import { Color, type PerspectiveCamera, Vector3 } from 'three';
+import type { MeshTags } from '../core/mesh';
+import { sharpnessColor } from './level-graphics';
 import { DEFAULT_LINE_WIDTH, type LineKind, lineWidthPx } from './line-style';
 import { lightShare } from './surface-materials';
 import { VIEW_COLORS } from './view-colors';
@@ -155,6 +157,38 @@ export function buildFigure(input: FigureInput): Figure {
   for (const o of overlays) layers.push(lineLayer(o.front, o.id, o.color, o.width));
   for (const o of dots) layers.push(dotLayer(o.front, o.id, o.color));
   return { width, height, background: input.background ? VIEW_COLORS.background : null, layers };
+}
+
+/**
+ * A level's sharp edges and corners (its OpenSubdiv tags) as the figure's
+ * creases and corners, a set per colour of their sharpness (as the view
+ * colours them, level-graphics.ts), lying on `faces`.
+ */
+export function tagOverlays(
+  tags: Pick<MeshTags, 'creaseEdges' | 'creaseSharpness' | 'cornerVertices' | 'cornerSharpness'>,
+  positions: ArrayLike<number>,
+  faces: NonNullable<LineSet['faces']>,
+): Required<Pick<FigureInput, 'creases' | 'corners'>> {
+  const groups = (vertices: Uint32Array, sharpness: Float32Array, per: 1 | 2) => {
+    const byColor = new Map<string, number[]>();
+    for (let i = 0; i < sharpness.length; ++i) {
+      const color = `#${sharpnessColor(sharpness[i]).getHexString()}`;
+      const group = byColor.get(color) ?? [];
+      group.push(...vertices.subarray(per * i, per * i + per));
+      byColor.set(color, group);
+    }
+    return [...byColor];
+  };
+  return {
+    creases: groups(tags.creaseEdges, tags.creaseSharpness, 2).map(([color, edges]) => ({
+      lines: { positions, edges, faces },
+      color,
+    })),
+    corners: groups(tags.cornerVertices, tags.cornerSharpness, 1).map(([color, vertices]) => ({
+      points: { positions, edges: vertices, faces },
+      color,
+    })),
+  };
 }
 
 /** Where vertex `i` of `positions` is drawn, x y from the top left. */
