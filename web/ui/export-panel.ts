@@ -62,7 +62,20 @@ export class ExportPanel {
         this.scale,
         el('label', { className: 'check', attrs: { for: transparentId } }, this.transparent, ' Transparent'),
       ),
-      el('div', { className: 'row wrap' }, ...this.buttons),
+      // A row a kind: pictures, vector figures, mesh files.
+      el('div', { className: 'row wrap' }, ...this.buttons.slice(0, 2)),
+      el(
+        'div',
+        { className: 'row wrap' },
+        el('span', { className: 'row-label', text: 'Figure' }),
+        ...this.buttons.slice(2, 5),
+      ),
+      el(
+        'div',
+        { className: 'row wrap' },
+        el('span', { className: 'row-label', text: 'Mesh' }),
+        ...this.buttons.slice(5),
+      ),
     );
   }
 
