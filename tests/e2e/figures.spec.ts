@@ -14,6 +14,7 @@ import { readFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { drawnPixels, type Raster, rasterEps, rasterPdf, shareWithin } from '../unit/figure-raster';
+import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
 import { readPng } from './helpers';
 
@@ -112,4 +113,33 @@ test('PDF and EPS exports render as the SVG export does', async ({ app }) => {
       expect(text).toContain('% faces\n');
     }
   });
+});
+
+test('<subdiv-viewer>: exportPdf and exportEps give the figure of exportSvg', async ({ embed, page }) => {
+  await embed.serve(
+    'e2e/figures.html',
+    viewerPage(
+      'Figures',
+      'subdiv-viewer{width:480px;height:360px}',
+      '<subdiv-viewer id="f" src="../meshes/cube.off" levels="1"></subdiv-viewer>',
+    ),
+  );
+  await page.goto('./e2e/figures.html');
+  await embed.waitForLevel('f', 1);
+  const files = await page.locator('#f').evaluate((e) => {
+    const viewer = e as HTMLElementTagNameMap['subdiv-viewer'];
+    return { svg: viewer.exportSvg(), pdf: Array.from(viewer.exportPdf(true)), eps: viewer.exportEps() };
+  });
+  const pdf = Buffer.from(files.pdf).toString('latin1');
+  const polygons = (files.svg.match(/<polygon /g) ?? []).length;
+  expect(polygons).toBeGreaterThan(4);
+  expect(pdf.startsWith('%PDF-1.4\n')).toBe(true);
+  // The page is the view's (the element's canvas, below its caption), as the SVG's.
+  const [, width, height] = /<svg [^>]*width="(\d+)" height="(\d+)"/.exec(files.svg) ?? [];
+  expect(Number(width)).toBe(480);
+  expect(pdf).toContain(`/MediaBox [0 0 ${width} ${height}]`);
+  expect(pdf).not.toContain(' re f\n');
+  expect(pdf.split('\n').filter((l) => / h B$/.test(l))).toHaveLength(polygons);
+  expect(files.eps).toContain(`\n%%BoundingBox: 0 0 ${width} ${height}\n`);
+  expect(files.eps.split('\n').filter((l) => / P$/.test(l))).toHaveLength(polygons);
 });
