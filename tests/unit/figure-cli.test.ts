@@ -48,7 +48,7 @@ function figure(name: string, extra: string[] = []) {
   const r = subdiv(['figure', CUBE, '--levels', '1', ...extra, '-o', join(work, name)]);
   expect(r.stderr).toBe('');
   expect(r.status).toBe(0);
-  return JSON.parse(r.stdout) as { polygons: number; view: string; width: number; height: number };
+  return JSON.parse(r.stdout) as { polygons: number; view: string; width: number; height: number; edgeOpacity: number };
 }
 
 /** Faces of an OFF whose front the eye sees: (eye − centroid) · Newell normal > 0. */
@@ -106,6 +106,8 @@ describe('subdiv figure', () => {
     expect(svg).toMatch(/^<svg [^>]*width="800" height="600" viewBox="0 0 800 600">/);
     const info = spawnSync('pdfinfo', [join(work, 'cube.pdf')], { encoding: 'utf8' });
     expect(info.status).toBe(0);
+    // poppler says nothing about the file's structure (a bad xref or length is a "Syntax Error" here).
+    expect(info.stderr).toBe('');
     expect(info.stdout).toMatch(/Pages:\s+1\n/);
     expect(info.stdout).toMatch(/Page size:\s+800 x 600 pts/);
     expect(info.stdout).toMatch(/Title:\s+cube\.off, Catmull-Clark, level 1/);
@@ -162,6 +164,14 @@ describe('subdiv figure', () => {
     // Catmull-Clark level 1 of the cube: 48 edges, none hidden.
     expect(wire.filter((l) => / M .* L$/.test(l))).toHaveLength(48);
     expect(wire.filter((l) => / P$/.test(l))).toHaveLength(0);
+    const wideReport = figure('wide.pdf', ['--line-width', '2', '--control-mesh']);
+    const wide = readFileSync(join(work, 'wide.pdf'), 'latin1');
+    // The edges at the setting, the cage at 1.5 times it (line-style.ts); edges 2 px wide crowd
+    // sooner, so they fade a little, through the stroking alpha of /GS0.
+    expect(wideReport.edgeOpacity).toBeLessThan(1);
+    expect(wide).toContain(`/GS0 << /Type /ExtGState /CA ${Math.round(wideReport.edgeOpacity * 100) / 100} >>`);
+    expect(wide).toContain('% faces\nq\n/GS0 gs 0.122 0.176 0.239 RG 2 w 1 j\n');
+    expect(wide).toContain('% control-mesh\nq\n0.91 0.349 0.047 RG 3 w 1 J 1 j\n');
     figure('clear.pdf', ['--transparent', '--control-mesh']);
     const clear = readFileSync(join(work, 'clear.pdf'), 'latin1');
     expect(clear).not.toContain(' re f');
