@@ -31,6 +31,9 @@ const DEBIAN_PACKAGES = [
   'clang-format',
   'libosd-dev',
   'libfast-float-dev',
+  // The figure tests render the PDF and EPS exports: pdftoppm and pdfinfo (poppler), gs (ghostscript).
+  'poppler-utils',
+  'ghostscript',
 ];
 
 function log(message) {

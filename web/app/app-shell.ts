@@ -172,7 +172,7 @@ export class AppShell {
     this.exports = new ExportPanel({
       onPng: (scale, transparent) => void this.exportActions.png(scale, transparent),
       onCopy: (transparent) => void this.exportActions.copyImage(transparent),
-      onSvg: (transparent) => this.exportActions.svg(transparent),
+      onFigure: (format, transparent) => this.exportActions.figure(format, transparent),
       onMesh: (format) => void this.exportActions.mesh(format),
     });
 

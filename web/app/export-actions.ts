@@ -1,10 +1,11 @@
 /**
  * What the Export menu and Ctrl+C do: PNG (side by side, every pane), SVG,
- * OFF/OBJ/PLY/STL downloads named after model, scheme and level (and saying
+ * PDF, EPS (the first pane's vector figure), OFF/OBJ/PLY/STL downloads named after model, scheme and level (and saying
  * so in a comment inside), and the view as a PNG on the clipboard. Failures
  * go to the shell's one error display.
  */
 import type { MeshFormat } from '../core/mesh';
+import type { FigureFormat } from '../render/figure';
 import { pictureGrid } from '../render/picture-grid';
 import { saveBlob } from '../ui/save-blob';
 import { exportComment, exportFileName } from '../viewer/file-names';
@@ -80,12 +81,20 @@ export class ExportActions {
     }
   }
 
-  svg(transparent: boolean): void {
+  /** The view as a vector figure: SVG, PDF or EPS (render/figure.ts), titled like the file. */
+  figure(format: FigureFormat, transparent: boolean): void {
+    const name = this.fileName(format);
     try {
-      const svg = this.viewer.exportSvg(transparent);
-      saveBlob(new Blob([svg], { type: 'image/svg+xml' }), this.fileName('svg'));
+      const title = name.replace(/\.[a-z]+$/, '');
+      const blob =
+        format === 'svg'
+          ? new Blob([this.viewer.exportSvg(transparent)], { type: 'image/svg+xml' })
+          : format === 'pdf'
+            ? new Blob([this.viewer.exportPdf(transparent, title) as BlobPart], { type: 'application/pdf' })
+            : new Blob([this.viewer.exportEps(transparent, title)], { type: 'application/postscript' });
+      saveBlob(blob, name);
     } catch (error) {
-      this.showError(this.fileName('svg'), error);
+      this.showError(name, error);
     }
   }
 

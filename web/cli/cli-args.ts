@@ -1,5 +1,8 @@
 import { parseArgs } from 'node:util';
 import type { BoundaryInterpolation, CreaseMethod, MeshFormat } from '../core/mesh';
+import type { FigureFormat } from '../render/figure';
+import { DEFAULT_LINE_WIDTH, MAX_LINE_WIDTH, MIN_LINE_WIDTH, parseLineWidth } from '../render/line-style';
+import { FIGURE_MODES, type FigureMode, type FigureOptions, parseFigureView } from './figure-command';
 
 /** The usage text printed by --help and on bad usage. */
 export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangulate] [-o OUTPUT.off|.obj|.ply|.stl] [--stats]
@@ -12,6 +15,8 @@ export const USAGE = `usage: subdiv INPUT [--scheme S] [--levels N] [--triangula
        subdiv inspect INPUT [--self-intersections] [--sphere] [--hull] [--width] [--all]
                      [--scheme S --levels K] ...
        subdiv halfedges INPUT [--scheme S --levels K] ...
+       subdiv figure INPUT [--scheme S --levels K] [--view V] [--mode M] [--control-mesh] [--curves]
+                    [--size WxH] [--line-width W] [--transparent] -o OUT.svg|.pdf|.eps
 
   INPUT            an OFF, OBJ, PLY or STL mesh (format from the extension; otherwise from the
                    content; ASCII and binary PLY and STL, STL corners welded by exact position)
@@ -70,13 +75,25 @@ halfedge h its next, prev and opposite halfedge (h xor 1), the vertex it points 
 face it bounds (null on the border), one halfedge per line; vertices and faces in the
 file's order (level K's as "subdiv INPUT --levels K -o OUT" writes them).
 
+subdiv figure INPUT -o OUT draws the mesh (or its level K of --scheme S) as the app's Export
+menu does, a vector figure by the extension: SVG, PDF (pdfLaTeX) or EPS (latex + dvips;
+opaque, fading lines mixed with what lies under them). --view front, top, side or iso (the
+app's canonical views, framed by its Fit), or a camera as the app's links write it
+("px,py,pz,tx,ty,tz,ux,uy,uz"); default the app's first view. --mode edges (default: shaded
+polygons with their edges), flat (no edges; smooth is the same), wireframe (every edge, no
+faces). --control-mesh draws the cage, --curves the control-edge curves (primal schemes); a
+tagged file's creases and corners are drawn as the app shows them. --size WxH in pixels, a
+point each in PDF and EPS (default 800x600); --line-width W the app's line width (default 1);
+--transparent leaves out the background. It prints the output file, the polygons drawn and
+the camera as JSON.
+
 Without -o and --stats the result is written to stdout as OFF.
 Exit status: 0 success, 1 bad input (one "error:" line on stderr), 2 bad usage.`;
 
 /** A command line that made sense. */
 export interface CliArgs {
   /** `subdiv info|stencil|check|compare|inspect|halfedges ...`, or the default, subdividing. */
-  command: 'subdivide' | 'info' | 'stencil' | 'check' | 'compare' | 'inspect' | 'halfedges';
+  command: 'subdivide' | 'info' | 'stencil' | 'check' | 'compare' | 'inspect' | 'halfedges' | 'figure';
   input: string;
   scheme: string;
   levels: number;
@@ -100,6 +117,8 @@ export interface CliArgs {
   repairOrientation: boolean;
   /** inspect: what to compute besides the measures. */
   inspect: { selfIntersections: boolean; sphere: boolean; hull: boolean; width: boolean };
+  /** figure: the output file and how to draw it. */
+  figure: (FigureOptions & { path: string }) | null;
   help: boolean;
 }
 
@@ -135,6 +154,7 @@ const NO_OPTIONS = {
   tolerance: DEFAULT_TOLERANCE,
   inspect: { selfIntersections: false, sphere: false, hull: false, width: false },
   repairOrientation: false,
+  figure: null,
 } as const satisfies Partial<CliArgs>;
 
 /** Parses argv (without node and the script). Throws UsageError; scheme names are checked later. */
@@ -154,19 +174,32 @@ export function parseCliArgs(argv: string[]): CliArgs {
   const check = positionals[0] === 'check';
   const inspect = positionals[0] === 'inspect';
   const halfedges = positionals[0] === 'halfedges';
-  const inputs = stencil || check || inspect || halfedges ? positionals.slice(1) : positionals;
+  const figure = positionals[0] === 'figure';
+  const inputs = stencil || check || inspect || halfedges || figure ? positionals.slice(1) : positionals;
   if (check && inputs.length !== 2) throw new UsageError('subdiv check takes two files: CONTROL RESULT');
   if (!check && inputs.length !== 1) {
     throw new UsageError(inputs.length === 0 ? 'no INPUT file given' : 'give exactly one INPUT file');
   }
-  const command = stencil ? 'stencil' : check ? 'check' : inspect ? 'inspect' : halfedges ? 'halfedges' : 'subdivide';
+  const command = stencil
+    ? 'stencil'
+    : check
+      ? 'check'
+      : inspect
+        ? 'inspect'
+        : halfedges
+          ? 'halfedges'
+          : figure
+            ? 'figure'
+            : 'subdivide';
   const computations = ['self-intersections', 'sphere', 'hull', 'width', 'all'] as const;
+  const drawing = ['view', 'mode', 'control-mesh', 'curves', 'size', 'line-width', 'transparent'] as const;
   const refused = {
-    stencil: ['output', 'stats', 'levels', 'tolerance', ...computations],
-    check: ['output', 'stats', 'level', 'vertex', ...computations],
-    inspect: ['output', 'stats', 'level', 'vertex', 'tolerance'],
-    halfedges: ['output', 'stats', 'level', 'vertex', 'tolerance', ...computations],
-    subdivide: ['level', 'vertex', 'tolerance', ...computations],
+    stencil: ['output', 'stats', 'levels', 'tolerance', ...computations, ...drawing],
+    check: ['output', 'stats', 'level', 'vertex', ...computations, ...drawing],
+    inspect: ['output', 'stats', 'level', 'vertex', 'tolerance', ...drawing],
+    halfedges: ['output', 'stats', 'level', 'vertex', 'tolerance', ...computations, ...drawing],
+    figure: ['stats', 'level', 'vertex', 'tolerance', ...computations],
+    subdivide: ['level', 'vertex', 'tolerance', ...computations, ...drawing],
   } as const;
   for (const name of refused[command]) {
     if (values[name] !== undefined) {
@@ -189,7 +222,7 @@ export function parseCliArgs(argv: string[]): CliArgs {
   }
   const levels = stencil
     ? count(values.level, '--level', 1)
-    : count(values.levels ?? (inspect || halfedges ? '0' : '1'), '--levels', 0);
+    : count(values.levels ?? (inspect || halfedges || figure ? '0' : '1'), '--levels', 0);
   // inspect: every computation unless some are chosen.
   const chosen = computations.some((name) => values[name] === true);
   const wants = (name: (typeof computations)[number]) => !chosen || values.all === true || values[name] === true;
@@ -212,7 +245,7 @@ export function parseCliArgs(argv: string[]): CliArgs {
     fixedBoundary: values['fixed-boundary'] === true,
     creaseMethod: creaseMethod as CreaseMethod | null,
     boundary: boundary as BoundaryInterpolation | null,
-    output: values.output === undefined ? null : { path: values.output, format: outputFormat(values.output) },
+    output: values.output === undefined || figure ? null : { path: values.output, format: outputFormat(values.output) },
     stats: values.stats === true,
     repairOrientation: values['repair-orientation'] === true,
     vertex,
@@ -222,7 +255,53 @@ export function parseCliArgs(argv: string[]): CliArgs {
       hull: wants('hull'),
       width: wants('width'),
     },
+    figure: figure ? figureOptions(values) : null,
     help,
+  };
+}
+
+/** `subdiv figure`'s drawing options and output, checked. */
+function figureOptions(values: ReturnType<typeof parse>['values']): FigureOptions & { path: string } {
+  const path = values.output;
+  if (path === undefined) throw new UsageError('subdiv figure needs -o OUT.svg, OUT.pdf or OUT.eps');
+  const format = /\.(svg|pdf|eps)$/i.exec(path)?.[1].toLowerCase() as FigureFormat | undefined;
+  if (!format) throw new UsageError(`figure file ${path} must end in .svg, .pdf or .eps`);
+  const view = values.view === undefined ? null : parseFigureView(values.view);
+  if (view === null && values.view !== undefined) {
+    throw new UsageError(
+      `--view must be front, top, side, iso or a camera "px,py,pz,tx,ty,tz,ux,uy,uz" (as the app's links write it), not "${values.view}"`,
+    );
+  }
+  const mode = values.mode ?? 'edges';
+  if (!FIGURE_MODES.includes(mode as FigureMode)) {
+    throw new UsageError(
+      `--mode must be ${FIGURE_MODES.join(', ')} (a vector figure draws flat-shaded polygons), not "${mode}"`,
+    );
+  }
+  const size = /^(\d{1,5})x(\d{1,5})$/.exec(values.size ?? '800x600');
+  const [width, height] = size ? [Number(size[1]), Number(size[2])] : [0, 0];
+  if (!(width >= 16 && height >= 16 && width <= 20000 && height <= 20000)) {
+    throw new UsageError(
+      `--size must be WIDTHxHEIGHT in pixels, 16 to 20000 each (e.g. 800x600), not "${values.size}"`,
+    );
+  }
+  const lineWidth = values['line-width'] === undefined ? DEFAULT_LINE_WIDTH : parseLineWidth(values['line-width']);
+  if (lineWidth === null) {
+    throw new UsageError(
+      `--line-width must be a number from ${MIN_LINE_WIDTH} to ${MAX_LINE_WIDTH}, not "${values['line-width']}"`,
+    );
+  }
+  return {
+    path,
+    format,
+    view,
+    mode: mode as FigureMode,
+    controlMesh: values['control-mesh'] === true,
+    curves: values.curves === true,
+    width,
+    height,
+    lineWidth,
+    transparent: values.transparent === true,
   };
 }
 
@@ -285,6 +364,13 @@ function parse(argv: string[]) {
       hull: { type: 'boolean' },
       width: { type: 'boolean' },
       all: { type: 'boolean' },
+      view: { type: 'string' },
+      mode: { type: 'string' },
+      'control-mesh': { type: 'boolean' },
+      curves: { type: 'boolean' },
+      size: { type: 'string' },
+      'line-width': { type: 'string' },
+      transparent: { type: 'boolean' },
       help: { type: 'boolean', short: 'h' },
     },
   });

@@ -3,7 +3,7 @@
  * write it and/or print its facts. Bundled for Node into build/cli/subdiv.mjs
  * (vite.cli.config.ts) and started by bin/subdiv.mjs.
  */
-import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
+import { closeSync, openSync, readFileSync, writeFileSync, writeSync } from 'node:fs';
 import { basename } from 'node:path';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
@@ -23,10 +23,13 @@ import {
   schemeNames,
   stepStencils,
   subdivide,
+  subdivideForView,
+  viewMesh,
   writeMesh,
 } from '../core/subdiv-core';
 import { SubdivError } from '../core/subdiv-error';
 import { type CliArgs, parseCliArgs, USAGE, UsageError } from './cli-args';
+import { renderFigure } from './figure-command';
 import { halfedgeJson } from './halfedge-json';
 
 /** Where the CLI writes; replaceable in tests. */
@@ -367,6 +370,30 @@ async function halfedges(args: CliArgs, io: CliIo, rules: RuleSet | undefined): 
   }
 }
 
+/** `subdiv figure`: the level as the app's vector figure (figure-command.ts), and what it shows as JSON. */
+async function figure(args: CliArgs, io: CliIo, rules: RuleSet | undefined): Promise<void> {
+  const options = args.figure;
+  if (!options) return;
+  const text = readMeshFile(args.input);
+  let result: ReturnType<typeof renderFigure>;
+  try {
+    const control = viewMesh(parseMesh(text, inputFormat(args.input), readOptions(args)));
+    const level =
+      args.levels > 0 ? subdivideForView(control.mesh, subdivideOptions(args, rules), control.facts) : control;
+    result = renderFigure(level, control, options, outputComment(args).replace(/^SubdivLab: /, ''));
+  } catch (error) {
+    throw inputError(args, error);
+  }
+  try {
+    writeFileSync(options.path, result.contents);
+  } catch (error) {
+    throw new InputError(`${options.path}: cannot write: ${(error as Error).message}`);
+  }
+  const { path, format, width, height } = options;
+  const report = { output: path, format, width, height, polygons: result.polygons, view: result.camera };
+  io.stdout(`${JSON.stringify({ ...report, edgeOpacity: Math.round(result.edgeOpacity * 1000) / 1000 })}\n`);
+}
+
 async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'info') return info(args, io);
   if (args.command === 'compare') return compare(args, io);
@@ -380,6 +407,7 @@ async function run(args: CliArgs, io: CliIo): Promise<void> {
   if (args.command === 'check') return check(args, io, rules);
   if (args.command === 'inspect') return inspect(args, io, rules);
   if (args.command === 'halfedges') return halfedges(args, io, rules);
+  if (args.command === 'figure') return figure(args, io, rules);
   const text = readMeshFile(args.input);
   let result: Mesh;
   let ms: number;

@@ -224,6 +224,16 @@ export class SubdivViewerElement extends ViewerAttributes {
     return this.start().exportSvg(transparent);
   }
 
+  /** The same figure as {@link exportSvg}, as a one-page PDF (bytes). */
+  exportPdf(transparent = false): Uint8Array {
+    return this.start().exportPdf(transparent);
+  }
+
+  /** The same figure as {@link exportSvg}, as EPS (opaque). */
+  exportEps(transparent = false): string {
+    return this.start().exportEps(transparent);
+  }
+
   getView(): ViewState | null {
     return this.viewer?.getView() ?? null;
   }

@@ -137,6 +137,9 @@ export function fitDistance(radius: number, fov: number, aspect: number): number
   return (radius / Math.sin(Math.min(vertical, horizontal))) * 1.2;
 }
 
+/** Direction the camera looks from (towards the model) when fitting: shows three sides of a box. */
+export const DEFAULT_VIEW_DIRECTION = new Vector3(0.55, 0.45, 1).normalize();
+
 export type CanonicalView = 'front' | 'top' | 'side' | 'iso';
 
 /** The canonical views in menu order: the direction from the model to the camera, and the camera's up. */

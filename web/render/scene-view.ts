@@ -28,33 +28,17 @@ import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
 import { orbitCamera, panCamera, zoomCamera } from './camera-moves';
-import { fitCamera, fitDistance, freeRect, viewOffsetPixels } from './fit';
+import { DEFAULT_VIEW_DIRECTION, fitCamera, fitDistance, freeRect, viewOffsetPixels } from './fit';
 import type { LevelGraphics } from './level-graphics';
 import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
-import { addLights, SURFACE_COLORS, SurfaceMaterials } from './surface-materials';
+import { addLights, SurfaceMaterials } from './surface-materials';
+import { VIEW_COLORS } from './view-colors';
 import { ViewLines } from './view-lines';
 import type { ViewState } from './view-state';
 
-/** Colours shared by the WebGL view and the SVG export. */
-export const VIEW_COLORS = {
-  background: '#f3f4f6',
-  /** Behind the model when the page prefers a dark scheme (the element's default there). */
-  backgroundDark: '#1f2328',
-  surface: SURFACE_COLORS.front,
-  edges: '#1f2d3d',
-  edgesOnDark: '#dce3ea',
-  control: '#e8590c',
-  curves: '#c2255c',
-  /** Border edges (of one face), drawn wider with the polygon edges. */
-  border: '#2f9e44',
-  bbox: '#6b7280',
-  /** The control edges and vertex the crease editor has selected, and the vertex the stencil inspector shows. */
-  selection: '#15aabf',
-  /** The parents of that vertex in the stencil inspector. */
-  parents: '#e8590c',
-} as const;
+export { VIEW_COLORS } from './view-colors';
 
 /** A click on the view: CSS pixels from its top left, and the modifier keys held. */
 export interface ViewClick {
@@ -66,9 +50,6 @@ export interface ViewClick {
 
 /** A press and release this close (CSS pixels) is a click, not a drag of the camera. */
 const CLICK_SLOP = 4;
-
-/** Direction the camera looks from (towards the model) when fitting: shows three sides of a box. */
-const FIT_DIRECTION = new Vector3(0.55, 0.45, 1).normalize();
 
 /**
  * Draws `parts` (a level's geometry, maybe in parts) with `object`: the
@@ -368,7 +349,7 @@ export class SceneView {
     const distance = fitDistance(this.radius, this.camera.fov, this.camera.aspect);
     this.controls.target.copy(sphere.center);
     this.camera.up.set(0, 1, 0);
-    this.camera.position.copy(sphere.center).addScaledVector(FIT_DIRECTION, distance);
+    this.camera.position.copy(sphere.center).addScaledVector(DEFAULT_VIEW_DIRECTION, distance);
     this.camera.lookAt(sphere.center);
     this.updateClipping();
     this.controls.update();
@@ -391,7 +372,7 @@ export class SceneView {
       const box = new Box3().setFromObject(this.extras);
       if (!box.isEmpty()) points.push([...box.min.toArray(), ...box.max.toArray()]);
     }
-    const direction = view ? new Vector3().fromArray(view.direction) : FIT_DIRECTION.clone();
+    const direction = view ? new Vector3().fromArray(view.direction) : DEFAULT_VIEW_DIRECTION.clone();
     const up = new Vector3().fromArray(view?.up ?? [0, 1, 0]);
     const { width, height } = this.size;
     // The view may have changed size since the resize observer last ran (a pane was just added beside it).

@@ -1,12 +1,14 @@
-/** Export: PNG (×1/×2/×4, optional transparent background), copy image, SVG, OFF, OBJ, PLY, STL. */
+/** Export: PNG (×1/×2/×4, optional transparent background), copy image, SVG, PDF, EPS, OFF, OBJ, PLY, STL. */
 import type { MeshFormat } from '../core/mesh';
+import type { FigureFormat } from '../render/figure';
 import type { ViewerState } from '../viewer/subdiv-viewer';
 import { button, dropdown, el, uniqueId } from './dom';
 
 export interface ExportPanelHandlers {
   onPng: (scale: number, transparent: boolean) => void;
   onCopy: (transparent: boolean) => void;
-  onSvg: (transparent: boolean) => void;
+  /** A vector figure of the view (SVG, PDF for pdfLaTeX, EPS for latex + dvips). */
+  onFigure: (format: FigureFormat, transparent: boolean) => void;
   onMesh: (format: MeshFormat) => void;
 }
 
@@ -31,7 +33,19 @@ export class ExportPanel {
         'Save the view as PNG',
       ),
       button('Copy image', 'export.copy', () => handlers.onCopy(transparent()), 'Copy the view as PNG (Ctrl+C)'),
-      button('SVG', 'export.svg', () => handlers.onSvg(transparent()), 'Save the view as SVG (polygons)'),
+      button('SVG', 'export.svg', () => handlers.onFigure('svg', transparent()), 'Save the view as SVG (polygons)'),
+      button(
+        'PDF',
+        'export.pdf',
+        () => handlers.onFigure('pdf', transparent()),
+        'Save the view as PDF (vector, for LaTeX)',
+      ),
+      button(
+        'EPS',
+        'export.eps',
+        () => handlers.onFigure('eps', transparent()),
+        'Save the view as EPS (vector, for latex + dvips; opaque)',
+      ),
       button('OFF', 'export.off', () => handlers.onMesh('off'), 'Save the shown level as OFF'),
       button('OBJ', 'export.obj', () => handlers.onMesh('obj'), 'Save the shown level as OBJ'),
       button('PLY', 'export.ply', () => handlers.onMesh('ply'), 'Save the shown level as PLY (ASCII)'),
@@ -48,7 +62,20 @@ export class ExportPanel {
         this.scale,
         el('label', { className: 'check', attrs: { for: transparentId } }, this.transparent, ' Transparent'),
       ),
-      el('div', { className: 'row wrap' }, ...this.buttons),
+      // A row a kind: pictures, vector figures, mesh files.
+      el('div', { className: 'row wrap' }, ...this.buttons.slice(0, 2)),
+      el(
+        'div',
+        { className: 'row wrap' },
+        el('span', { className: 'row-label', text: 'Figure' }),
+        ...this.buttons.slice(2, 5),
+      ),
+      el(
+        'div',
+        { className: 'row wrap' },
+        el('span', { className: 'row-label', text: 'Mesh' }),
+        ...this.buttons.slice(5),
+      ),
     );
   }
 

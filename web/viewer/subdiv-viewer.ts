@@ -43,11 +43,14 @@ import {
   type WorkerClient,
 } from '../core/worker-client';
 import { fanPolygons } from '../render/fan-polygons';
+import { buildFigure, type Figure, tagOverlays } from '../render/figure';
+import { figureEps } from '../render/figure-eps';
+import { figurePdf } from '../render/figure-pdf';
 import { CANONICAL_VIEWS, type CanonicalView } from '../render/fit';
-import { LevelGraphics, sharpnessColor } from '../render/level-graphics';
+import { LevelGraphics } from '../render/level-graphics';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import { SceneView } from '../render/scene-view';
-import { exportSvg } from '../render/svg-export';
+import { figureSvg } from '../render/svg-export';
 import type { ViewState } from '../render/view-state';
 import { CurvatureShading } from './curvature-shading';
 import { defaultMemoryBudget, stepBytes } from './memory-budget';
@@ -100,18 +103,6 @@ export interface BusyState {
 export interface DrawnLevel {
   level: number;
   at: number;
-}
-
-/** The vertices of tagged items (`per` an item: 2 for edges, 1 for corners), grouped by the colour of their sharpness. */
-function bySharpnessColor(vertices: Uint32Array, sharpness: Float32Array, per: 1 | 2): Map<string, number[]> {
-  const groups = new Map<string, number[]>();
-  for (let i = 0; i < sharpness.length; ++i) {
-    const color = `#${sharpnessColor(sharpness[i]).getHexString()}`;
-    const group = groups.get(color) ?? [];
-    group.push(...vertices.subarray(per * i, per * i + per));
-    groups.set(color, group);
-  }
-  return groups;
 }
 
 /** A level's tags as the facts panel lists them. */
@@ -606,6 +597,21 @@ export class SubdivViewer {
 
   /** SVG of the view: camera-facing polygons back to front, and the overlays shown. */
   exportSvg(transparent = false): string {
+    return figureSvg(this.figure(transparent));
+  }
+
+  /** The same figure as {@link exportSvg}, as a one-page PDF titled `title`. */
+  exportPdf(transparent = false, title?: string): Uint8Array {
+    return figurePdf(this.figure(transparent), title);
+  }
+
+  /** The same figure as {@link exportSvg}, as EPS (opaque: fading lines mixed with what lies under them). */
+  exportEps(transparent = false, title?: string): string {
+    return figureEps(this.figure(transparent), title);
+  }
+
+  /** The view as a vector figure (render/figure.ts), in any format. */
+  private figure(transparent: boolean): Figure {
     const { buffers, controlEdges, tags } = this.requireLevel().data;
     const base = this.levels[0].data.buffers;
     // The polygons as the core fanned them: the shown level's, in float32.
@@ -618,27 +624,14 @@ export class SubdivViewer {
         ? { positions: buffers.positions, edges: controlEdges, faces: mesh }
         : null;
     // The sharp edges and vertices, one set per colour.
-    const shown = this.view.overlay('creases') && tags;
-    const creases = shown
-      ? [...bySharpnessColor(tags.creaseEdges, tags.creaseSharpness, 2)].map(([color, edges]) => ({
-          lines: { positions: buffers.positions, edges, faces: mesh },
-          color,
-        }))
-      : [];
-    const corners = shown
-      ? [...bySharpnessColor(tags.cornerVertices, tags.cornerSharpness, 1)].map(([color, vertices]) => ({
-          points: { positions: buffers.positions, edges: vertices, faces: mesh },
-          color,
-        }))
-      : [];
-    return exportSvg({
+    const tagged = this.view.overlay('creases') && tags ? tagOverlays(tags, buffers.positions, mesh) : {};
+    return buildFigure({
       mesh,
       camera: this.view.camera,
       ...this.view.size,
       control,
       curves,
-      creases,
-      corners,
+      ...tagged,
       background: !transparent,
       lineWidth: this.view.lineWidthSetting,
       edgeOpacity: this.view.edgeOpacity(),
