@@ -7,6 +7,7 @@
  * checked against the published rules and the cube's geometry, not against
  * the app's code.
  */
+import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
@@ -291,7 +292,7 @@ test('a bad tool value fires error invalid_attribute; the viewer goes on without
   expect(error.detail).toMatchObject({
     code: 'invalid_attribute',
     source: 'tool',
-    message: 'tool must be none, stencils, basis or split, not "stencil".',
+    message: 'tool must be none, stencils, basis, split or halfedges, not "stencil".',
   });
   await expect(page.locator('#bad').locator('.message')).toContainText('tool must be none');
   expect(await page.evaluate(() => (document.getElementById('bad') as Viewer).tool)).toBe('none');
@@ -340,4 +341,40 @@ test('the iframe route: ?tool=stencils&vertex=7&levels=1 shows the caption; set-
     .poll(async () => (await embed.events('message:basis')).at(-1)?.detail)
     .toMatchObject({ vertex: 0, level: 1, reached: 19, count: 26 });
   await expect(caption).toContainText('Basis function of control vertex 0: reaches 19 of 26 vertices');
+});
+
+test('tool="halfedges": the cube’s 24 arrows; a click picks one, numbered as subdiv halfedges numbers it', async ({
+  embed,
+  page,
+}) => {
+  await embed.serve(
+    'e2e/halfedges.html',
+    viewerPage(
+      'Halfedges',
+      'subdiv-viewer{width:560px}',
+      `<subdiv-viewer id="he" src="../meshes/cube.off" tool="halfedges" view="${VIEW}"></subdiv-viewer>`,
+    ),
+  );
+  await page.goto('./e2e/halfedges.html');
+  await embed.waitForLevel('he', 0);
+  await expect.poll(() => embed.caption('he')).toBe('Level 0: 24 halfedges. Click an arrow to pick one.');
+  // The middle of the picture is on the cube; the arrow nearest the click is picked.
+  const stage = page.locator('#he').locator('[part="stage"]');
+  const box = await stage.boundingBox();
+  if (!box) throw new Error('no stage');
+  await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+  await expect.poll(() => embed.caption('he')).toMatch(/^Halfedge \d+: /);
+  const line = (await embed.caption('he')).split('\n')[0];
+  const m = /^Halfedge (\d+): vertex (\d+) → vertex (\d+), face (\d+); next (\d+), prev (\d+), opposite (\d+)$/.exec(
+    line,
+  );
+  expect(m, line).not.toBeNull();
+  const [h, source, target, face, next, prev, opposite] = (m ?? []).slice(1).map(Number);
+  // The same row in the table the CLI prints from the same file.
+  const table = JSON.parse(
+    execFileSync(process.execPath, ['bin/subdiv.mjs', 'halfedges', 'public/meshes/cube.off'], { encoding: 'utf8' }),
+  ).table as { h: number; next: number; prev: number; opposite: number; vertex: number; face: number | null }[];
+  expect(table[h]).toEqual({ h, next, prev, opposite, vertex: target, face });
+  expect(table[opposite].vertex).toBe(source);
+  await page.locator('#he').screenshot({ path: 'test-results/screenshots/embed-tools-halfedges.png' });
 });

@@ -132,8 +132,8 @@ describe('teaching tool attributes', () => {
   });
 
   it.each([
-    ['tool', 'stencil', 'tool must be none, stencils, basis or split, not "stencil".'],
-    ['tool', 'Basis', 'tool must be none, stencils, basis or split, not "Basis".'],
+    ['tool', 'stencil', 'tool must be none, stencils, basis, split or halfedges, not "stencil".'],
+    ['tool', 'Basis', 'tool must be none, stencils, basis, split or halfedges, not "Basis".'],
     ['vertex', '-1', 'vertex must be a whole number ≥ 0, not "-1".'],
     ['vertex', '2.5', 'vertex must be a whole number ≥ 0, not "2.5".'],
     ['vertex', 'seven', 'vertex must be a whole number ≥ 0, not "seven".'],
@@ -262,9 +262,9 @@ describe('iframe commands', () => {
     ],
     [
       { subdivlab: 'set-tool', tool: 'stencil' },
-      'set-tool: tool must be none, stencils, basis or split, not "stencil"',
+      'set-tool: tool must be none, stencils, basis, split or halfedges, not "stencil"',
     ],
-    [{ subdivlab: 'set-tool' }, 'set-tool: tool must be none, stencils, basis or split, not undefined'],
+    [{ subdivlab: 'set-tool' }, 'set-tool: tool must be none, stencils, basis, split or halfedges, not undefined'],
     [{ subdivlab: 'set-tool', tool: 'basis', vertex: -1 }, 'set-tool: vertex must be a whole number ≥ 0'],
     [{ subdivlab: 'set-tool', tool: 'basis', vertex: '3' }, 'set-tool: vertex must be a whole number ≥ 0'],
     [{ subdivlab: 'set-tool', tool: 'basis', vertex: 0.5 }, 'set-tool: vertex must be a whole number ≥ 0'],

@@ -117,7 +117,7 @@ export function checkCommand(data: unknown): Checked {
       if (typeof data.tool !== 'string' || !isEmbedTool(data.tool)) {
         return {
           ok: false,
-          reason: `set-tool: tool must be none, stencils, basis or split, not ${JSON.stringify(data.tool)}`,
+          reason: `set-tool: tool must be none, stencils, basis, split or halfedges, not ${JSON.stringify(data.tool)}`,
         };
       }
       if (data.vertex === undefined) return { ok: true, command: { subdivlab: 'set-tool', tool: data.tool } };

@@ -49,9 +49,9 @@ export interface EmbedState {
 export const DEFAULT_CONTROLS: ControlsMode = 'minimal';
 
 /** The teaching tools an element can show (web/teach/): none, the stencil inspector, a basis function, split then smooth. */
-export type EmbedTool = 'none' | 'stencils' | 'basis' | 'split';
+export type EmbedTool = 'none' | 'stencils' | 'basis' | 'split' | 'halfedges';
 
-export const EMBED_TOOLS: readonly EmbedTool[] = ['none', 'stencils', 'basis', 'split'];
+export const EMBED_TOOLS: readonly EmbedTool[] = ['none', 'stencils', 'basis', 'split', 'halfedges'];
 
 export function isEmbedTool(value: string): value is EmbedTool {
   return (EMBED_TOOLS as readonly string[]).includes(value);
@@ -131,7 +131,7 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
     else
       problems.push({
         attribute: 'tool',
-        message: `tool must be none, stencils, basis or split, not "${toolText}".`,
+        message: `tool must be none, stencils, basis, split or halfedges, not "${toolText}".`,
       });
   }
   const vertexText = attr('vertex');

@@ -1,6 +1,7 @@
 /**
  * The teaching tools of a `<subdiv-viewer>` (attribute `tool`): the stencil
- * inspector, a basis function, split then smooth — the app's own classes
+ * inspector, a basis function, split then smooth, the halfedge explorer
+ * (its arrows; a click picks one) — the app's own classes
  * (web/teach/) over the element's SubdivViewer, driven by the attributes
  * `tool`, `vertex` and `split` instead of panels. A click on the view picks
  * a vertex as in the app and is reflected into `vertex`; what is shown is
@@ -10,6 +11,7 @@
 import type { Mesh } from '../core/mesh';
 import type { ViewClick } from '../render/scene-view';
 import { BasisView } from '../teach/basis-view';
+import { HalfedgeExplorer } from '../teach/halfedge-explorer';
 import { SplitSmooth } from '../teach/split-smooth';
 import { StencilInspector, stencilOrigin, stencilSum } from '../teach/stencil-inspector';
 import { influenceEnds } from '../ui/influence-bar';
@@ -39,6 +41,7 @@ export class EmbedTools {
   private readonly inspector: StencilInspector;
   private readonly basis: BasisView;
   private readonly split: SplitSmooth;
+  private readonly halfedges: HalfedgeExplorer;
   private tool: EmbedTool = 'none';
   /** What was last asked of the tool (another level, model, vertex or t asks again). */
   private applied: { key: string; mesh: Mesh | null } | null = null;
@@ -58,6 +61,8 @@ export class EmbedTools {
     this.inspector = new StencilInspector(viewer, fail);
     this.basis = new BasisView(viewer, fail);
     this.split = new SplitSmooth(viewer, fail);
+    this.halfedges = new HalfedgeExplorer(viewer, fail);
+    this.halfedges.onChange(() => this.show());
     this.inspector.onChange((state) => {
       if (state.stencil && state.stencil !== this.lastStencil && this.tool === 'stencils') {
         const s = state.stencil;
@@ -104,6 +109,7 @@ export class EmbedTools {
       this.tool = tool;
       this.applied = null;
       if (tool === 'stencils') this.inspector.setInspecting(true);
+      if (tool === 'halfedges') this.halfedges.setExploring(true);
     }
     this.refresh();
   }
@@ -177,6 +183,7 @@ export class EmbedTools {
   /** Turns `tool` off: its marks, colours or blend go. */
   private switchOff(tool: EmbedTool): void {
     if (tool === 'stencils') this.inspector.setInspecting(false);
+    if (tool === 'halfedges') this.halfedges.setExploring(false);
     if (tool === 'basis') this.basis.setPicking(false);
     if (tool === 'split') {
       const s = this.split.state;
@@ -185,6 +192,7 @@ export class EmbedTools {
   }
 
   private click(click: ViewClick): void {
+    if (this.tool === 'halfedges') this.halfedges.click(click);
     const vertex =
       this.tool === 'stencils' ? this.inspector.pick(click) : this.tool === 'basis' ? this.basis.pick(click) : null;
     if (vertex !== null) this.host.setVertex(vertex);
@@ -240,6 +248,20 @@ export class EmbedTools {
         const state = this.split.state;
         if (state.message) return { line: state.message, hint: true };
         return { line: `Split → smoothed: ${state.t.toFixed(2)}` };
+      }
+      case 'halfedges': {
+        const state = this.halfedges.state;
+        if (state.refusal) return { line: state.refusal, hint: true };
+        const p = state.picked;
+        if (!p) {
+          if (state.halfedgeCount === 0) return { line: 'Halfedges…', hint: true };
+          return { line: `Level ${level}: ${state.halfedgeCount} halfedges. Click an arrow to pick one.`, hint: true };
+        }
+        const face = p.face < 0 ? 'border' : `face ${p.face}`;
+        return {
+          line: `Halfedge ${p.h}: vertex ${p.source} → vertex ${p.target}, ${face}; next ${p.next}, prev ${p.prev}, opposite ${p.opposite}`,
+          note: 'Numbered as CGAL’s Surface_mesh numbers this level (subdiv halfedges prints the table)',
+        };
       }
     }
   }

@@ -123,7 +123,7 @@ export class ViewerAttributes extends HTMLElement {
   set background(value: string) {
     this.setAttribute('background', value);
   }
-  /** The teaching tool shown: `none`, `stencils`, `basis` or `split`. */
+  /** The teaching tool shown: `none`, `stencils`, `basis`, `split` or `halfedges`. */
   get tool(): EmbedTool {
     return this.readState().tool;
   }
