@@ -70,3 +70,40 @@ test("a student's Catmull-Clark level 2: a match, then one moved vertex named, c
   await expect(app.byTestId('stencils.inspect')).toHaveAttribute('aria-pressed', 'true');
   await expect(app.byTestId('stencils.title')).toHaveText(/^Vertex \d+ of level 2$/);
 });
+
+/** Binary little-endian PLY of `mesh` (double coordinates, uchar counts, int indices), as another program might write it. */
+function binaryPly(mesh: PlainMesh): Buffer {
+  const header = [
+    'ply',
+    'format binary_little_endian 1.0',
+    `element vertex ${mesh.points.length}`,
+    'property double x',
+    'property double y',
+    'property double z',
+    `element face ${mesh.faces.length}`,
+    'property list uchar int vertex_indices',
+    'end_header',
+    '',
+  ].join('\n');
+  const body = Buffer.alloc(24 * mesh.points.length + mesh.faces.reduce((n, f) => n + 1 + 4 * f.length, 0));
+  let at = 0;
+  for (const p of mesh.points) for (const x of p) at = body.writeDoubleLE(x, at);
+  for (const f of mesh.faces) {
+    at = body.writeUInt8(f.length, at);
+    for (const v of f) at = body.writeInt32LE(v, at);
+  }
+  return Buffer.concat([Buffer.from(header, 'ascii'), body]);
+}
+
+test("a student's level 1 as a binary PLY is read from its bytes and matches", async ({ app }) => {
+  await app.open();
+  await app.load('cube.off', CUBE);
+  await app.byTestId('check.level').fill('1');
+  await app.byTestId('check.file').setInputFiles({
+    name: 'my-cc1.ply',
+    mimeType: 'application/octet-stream',
+    buffer: binaryPly(repeat(catmullClarkStep, plainCube(), 1)),
+  });
+  await app.byTestId('check.run').click();
+  await expect(app.byTestId('check.verdict')).toHaveText('✓ my-cc1.ply is level 1.');
+});

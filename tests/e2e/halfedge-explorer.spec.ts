@@ -6,7 +6,10 @@
  * mesh back); √3 by hand played to its end on the icosahedron, equal to
  * the scheme's level 1; a level too large refused.
  */
+import { readFileSync } from 'node:fs';
+import { readFile } from 'node:fs/promises';
 import { expect, test } from './fixtures';
+import { readPng } from './helpers';
 import type { SubdivLabPage } from './subdivlab-page';
 
 type Halfedges = ReturnType<NonNullable<Window['__subdivlab']>['halfedges']>;
@@ -215,4 +218,32 @@ test('the open grid: border halfedges outside the boundary, one border loop of 1
   await expect.poll(async () => (await halfedges(app)).explorer.picked?.face).toBe(table.face[border[0] ^ 1]);
   expect(table.face[border[0] ^ 1]).toBeGreaterThanOrEqual(0);
   await app.snapshot('halfedge-explorer-open-grid');
+});
+
+test('a ×4 PNG draws the arrows four times as wide: their dark pixels grow sixteenfold, not fourfold', async ({
+  app,
+}) => {
+  await app.open();
+  await app.load('cube.off', readFileSync('public/meshes/cube.off', 'utf8'));
+  await explore(app, 24);
+  // Near-black: the arrows (the cube's darkest side is far lighter).
+  const darkPixels = async (scale: number) => {
+    await app.byTestId('export-panel').locator('summary').click();
+    await app.byTestId('export.scale').selectOption(String(scale));
+    const download = await app.download('export.png');
+    const png = readPng(await readFile(await download.path()));
+    let dark = 0;
+    for (let y = 0; y < png.height; y++)
+      for (let x = 0; x < png.width; x++) {
+        const [r, g, b] = png.pixel(x, y);
+        if (0.299 * r + 0.587 * g + 0.114 * b < 60) dark++;
+      }
+    return dark;
+  };
+  const one = await darkPixels(1);
+  const four = await darkPixels(4);
+  expect(one).toBeGreaterThan(500);
+  // Width and length both × 4 (× 4 alone, had the width stayed, would give about × 4).
+  expect(four / one).toBeGreaterThan(12);
+  expect(four / one).toBeLessThan(20);
 });

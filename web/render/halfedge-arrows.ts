@@ -156,6 +156,9 @@ export class HalfedgeArrows {
       new LineSegmentsGeometry(),
       new LineMaterial({ vertexColors: true, linewidth: 5 * devicePixelRatio }),
     );
+    // CSS pixels: the view scales them to a picture's pixels (SceneView, as its own lines).
+    this.arrows.userData.cssLineWidth = 2.5;
+    this.marks.userData.cssLineWidth = 5;
     this.vertexMark = new Points(
       new BufferGeometry(),
       new PointsMaterial({ color: HALFEDGE_COLORS.picked, size: 14, sizeAttenuation: false, depthTest: false }),

@@ -453,6 +453,11 @@ export class SceneView {
     ]);
     // The selection is a marker of fixed size, only scaled with the picture.
     this.selectedLines.material.linewidth = 12 * pixelsPerCss;
+    // A tool's fat lines that name their width in CSS pixels (the halfedge arrows) scale the same way.
+    this.extras?.traverse((object) => {
+      const css = object.userData.cssLineWidth;
+      if (object instanceof LineSegments2 && typeof css === 'number') object.material.linewidth = css * pixelsPerCss;
+    });
   }
 
   /** The current viewpoint. */

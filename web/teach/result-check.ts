@@ -7,7 +7,7 @@
  * inspector shows.
  */
 import type { MeshComparison } from '../core/compare';
-import type { MeshFormat } from '../core/mesh';
+import type { ReadFormat } from '../core/mesh';
 import { influenceColors } from '../render/level-graphics';
 import type { SubdivViewer } from '../viewer/subdiv-viewer';
 
@@ -53,8 +53,14 @@ export class ResultCheck {
     return () => this.listeners.delete(listener);
   }
 
-  /** Checks `text` (file `name`) as level `level` of the shown model and scheme. */
-  async check(name: string, text: string, format: MeshFormat, level: number, relativeTolerance: number): Promise<void> {
+  /** Checks `text` (file `name`, text or bytes) as level `level` of the shown model and scheme. */
+  async check(
+    name: string,
+    text: string | Uint8Array,
+    format: ReadFormat,
+    level: number,
+    relativeTolerance: number,
+  ): Promise<void> {
     try {
       if (!(await this.reach(level))) return;
       const comparison = await this.viewer.checkResult(level, text, format, relativeTolerance);

@@ -3,12 +3,13 @@
  * tolerance; then the verdict, its reasons, the errors and the worst
  * vertices, each with a button that shows its expected stencil.
  */
-import type { MeshFormat } from '../core/mesh';
+import type { ReadFormat } from '../core/mesh';
 import type { CheckState } from '../teach/result-check';
+import { detectFormat } from '../viewer/mesh-source';
 import { button, el, section, uniqueId } from './dom';
 
 export interface CheckPanelHandlers {
-  onCheck: (name: string, text: string, format: MeshFormat, level: number, tolerance: number) => void;
+  onCheck: (name: string, text: string | Uint8Array, format: ReadFormat, level: number, tolerance: number) => void;
   /** Shows the expected stencil of reference vertex `vertex` of level `level`. */
   onShowStencil: (level: number, vertex: number) => void;
 }
@@ -31,7 +32,7 @@ export class CheckPanel {
     const toleranceId = uniqueId('check-tolerance');
     this.file = el('input', {
       testId: 'check.file',
-      attrs: { id: fileId, type: 'file', accept: '.off,.obj,text/plain' },
+      attrs: { id: fileId, type: 'file', accept: '.off,.obj,.ply,.stl,text/plain' },
     });
     this.level = el('input', {
       testId: 'check.level',
@@ -48,7 +49,7 @@ export class CheckPanel {
       'check-panel',
       el('p', {
         className: 'hint',
-        text: "Your program's level of this model and scheme, as OFF or OBJ: it is read here and sent nowhere.",
+        text: "Your program's level of this model and scheme, as OFF, OBJ, PLY or STL: it is read here and sent nowhere.",
       }),
       el('label', { attrs: { for: fileId }, text: 'Result file' }),
       this.file,
@@ -76,8 +77,8 @@ export class CheckPanel {
     if (!file) return this.say('Choose the result file first.');
     if (!Number.isInteger(level) || level < 1) return this.say('The level is a whole number, 1 or more.');
     if (!(tolerance >= 0)) return this.say('The tolerance is a number, 0 or more (a share of the diagonal).');
-    const format: MeshFormat = /\.obj$/i.test(file.name) ? 'obj' : 'off';
-    handlers.onCheck(file.name, await file.text(), format, level, tolerance);
+    // Read as bytes: PLY and STL may be binary; the format from the extension, else from the content.
+    handlers.onCheck(file.name, new Uint8Array(await file.arrayBuffer()), detectFormat(file.name), level, tolerance);
   }
 
   private say(text: string): void {

@@ -774,7 +774,12 @@ export class SubdivViewer {
    * Checks a result from elsewhere (OFF/OBJ text) against computed level
    * `k` (compare.ts): `tolerance` is a share of the level's diagonal.
    */
-  async checkResult(k: number, text: string, format: MeshFormat, tolerance: number): Promise<MeshComparison | null> {
+  async checkResult(
+    k: number,
+    text: string | Uint8Array,
+    format: ReadFormat,
+    tolerance: number,
+  ): Promise<MeshComparison | null> {
     if (!this.levels[k]) return null;
     return this.computing(`Checking the result against level ${k}…`, () =>
       this.withHandle(k, (h) => this.core.compare(h, text, format, tolerance)),
