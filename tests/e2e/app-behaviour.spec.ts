@@ -149,9 +149,9 @@ test('after a cancelled step the worker restarts without the levels it kept: the
   await app.subdivide();
   const level1 = await app.positions();
   expect(level1.length).toBe(3 * 601 * 601);
+  const cancelled = await app.cancelWhenProgressShows();
   await app.byTestId('controls.subdivide').click();
-  await expect(app.byTestId('progress')).toBeVisible();
-  await app.byTestId('progress.cancel').click();
+  await cancelled();
   await expect(app.byTestId('progress')).toBeHidden();
   expect(await app.state()).toMatchObject({ busy: false, level: 1, levelCount: 2 });
   await test.step('the shown level reads back as it was (made again, step by step, in the new worker)', async () => {

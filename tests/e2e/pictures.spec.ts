@@ -299,9 +299,9 @@ test('Cancel of a long step says which level was not computed and which is shown
   await app.load('grid-150.off', quadGridOff(150));
   await app.subdivide();
   await app.subdivide();
+  const cancelled = await app.cancelWhenProgressShows();
   await app.byTestId('controls.subdivide').click();
-  await expect(app.byTestId('progress')).toBeVisible();
-  await app.byTestId('progress.cancel').click();
+  await cancelled();
   await expect(app.byTestId('notice.message')).toHaveText('Cancelled: level 3 was not computed; level 2 is shown.');
   expect(await app.state()).toMatchObject({ busy: false, level: 2, levelCount: 3 });
   await test.step('the next load clears the message', async () => {

@@ -139,6 +139,34 @@ export class SubdivLabPage {
     return after;
   }
 
+  /**
+   * Arms Cancel: the page itself presses the progress box's Cancel the moment
+   * the box shows, and the returned promise resolves once it has. A click from
+   * Playwright can come too late: a step only a little longer than the box's
+   * 200 ms delay ends between the box showing and the click.
+   */
+  async cancelWhenProgressShows(): Promise<() => Promise<void>> {
+    await this.page.evaluate(() => {
+      const flag = window as unknown as { cancelPressed?: boolean };
+      flag.cancelPressed = false;
+      const box = document.querySelector<HTMLElement>('[data-testid="progress"]');
+      const cancel = document.querySelector<HTMLButtonElement>('[data-testid="progress.cancel"]');
+      if (!box || !cancel) throw new Error('no progress box');
+      const observer = new MutationObserver(() => {
+        if (box.hidden) return;
+        observer.disconnect();
+        cancel.click();
+        flag.cancelPressed = true;
+      });
+      observer.observe(box, { attributes: true, attributeFilter: ['hidden'] });
+    });
+    return async () => {
+      await expect
+        .poll(() => this.page.evaluate(() => (window as unknown as { cancelPressed?: boolean }).cancelPressed))
+        .toBe(true);
+    };
+  }
+
   /** Moves the level scrubber. */
   async scrubTo(level: number): Promise<void> {
     await this.byTestId('controls.level').fill(String(level));
