@@ -135,7 +135,14 @@ const steps = [
   ['e2e', e2eTests],
 ];
 for (const [name, step] of steps) {
-  if (skipped.has(name)) heading(`${name}: skipped (--skip)`);
-  else if (!step()) finish(name);
+  if (skipped.has(name)) {
+    heading(`${name}: skipped (--skip)`);
+    continue;
+  }
+  const start = Date.now();
+  const passed = step();
+  // CI allows 20 minutes for everything: each step says what it took.
+  console.log(`[test] step "${name}" took ${Math.round((Date.now() - start) / 1000)} s`);
+  if (!passed) finish(name);
 }
 finish(null);
