@@ -1006,12 +1006,14 @@ val js_throw_for_test(const std::string& kind) {
     throw 42;
   });
 }
+#endif  // SUBDIVLAB_TEST_HOOKS
 
-/// Bytes in use in the heap, for leak checks in the tests.
+/// Bytes allocated in the heap right now: the worker reports them
+/// (`memory` requests), and the tests check that long sessions and failed
+/// calls give everything back.
 double js_heap_in_use() {
   return static_cast<double>(static_cast<unsigned int>(mallinfo().uordblks));
 }
-#endif  // SUBDIVLAB_TEST_HOOKS
 
 }  // namespace
 }  // namespace subdivlab
@@ -1038,8 +1040,8 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("scheme_names", &subdivlab::js_scheme_names);
   emscripten::function("scheme_info", &subdivlab::js_scheme_info);
   emscripten::function("check_rules", &subdivlab::js_check_rules);
-#ifdef SUBDIVLAB_TEST_HOOKS
   emscripten::function("heap_in_use", &subdivlab::js_heap_in_use);
+#ifdef SUBDIVLAB_TEST_HOOKS
   emscripten::function("throw_for_test", &subdivlab::js_throw_for_test);
 #endif
 }

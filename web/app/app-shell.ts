@@ -8,7 +8,7 @@
 import type { ReadOptions, SchemeName } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
 import { SubdivError } from '../core/subdiv-error';
-import { CancelledError } from '../core/worker-client';
+import { CancelledError, CoreCrashedError } from '../core/worker-client';
 import { projectPoints } from '../render/fit';
 import { nextRenderMode } from '../render/render-mode';
 import { ConfirmDialog } from '../ui/confirm-dialog';
@@ -122,6 +122,9 @@ export class AppShell {
     });
     this.firstVisitHint.hidden = true;
     this.viewer = new SubdivViewer(stage, { confirmLargeStep: (info) => this.confirmLargeStep(info) });
+    // A crash is said here once, whichever request was running (showError passes over its rejection).
+    // It goes, as a step's error does, once a later step succeeds.
+    this.viewer.core.client.onCrash((error) => this.displayError('SubdivLab core', error, undefined, 'step'));
     this.progress = new ProgressOverlay(() => this.cancel());
     this.exportActions = new ExportActions(
       this.viewer,
@@ -337,6 +340,8 @@ export class AppShell {
       positions: async () => Array.from((await this.viewer.meshOf())?.positions ?? []),
       drawnPositions: () => Array.from(this.viewer.buffersOf(this.viewer.state.level)?.positions ?? []),
       setMemoryBudget: (bytes) => this.viewer.setMemoryBudget(bytes),
+      crashCore: (how, during) => this.viewer.core.client.crashForTest(how, during),
+      coreMemory: () => this.viewer.core.client.memory(),
       projected: (level, pane = 0) => {
         const viewer = this.tools.sideBySide.viewers()[pane];
         if (!viewer) return [];
@@ -423,7 +428,12 @@ export class AppShell {
    * step succeeds; others stay until dismissed or a model loads.
    */
   showError(source: string, error: unknown, action?: ErrorAction, kind: 'step' | 'other' = 'other'): void {
-    if (error instanceof CancelledError) return;
+    // A crash has been said by the crash listener (with what was running).
+    if (error instanceof CancelledError || error instanceof CoreCrashedError) return;
+    this.displayError(source, error, action, kind);
+  }
+
+  private displayError(source: string, error: unknown, action: ErrorAction | undefined, kind: 'step' | 'other'): void {
     const message = messageOf(error);
     const where = error instanceof LoadError ? error.source : source;
     this.lastError = {

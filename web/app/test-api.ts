@@ -4,6 +4,8 @@
  */
 import type { MeshFacts } from '../core/mesh';
 import type { RuleSet } from '../core/rule-set';
+import type { WorkerMemory } from '../core/worker-client';
+import type { CrashKind, WorkerRequestKind } from '../core/worker-protocol';
 import type { OverlayName, RenderMode } from '../render/render-mode';
 import type { ViewState } from '../render/view-state';
 import type { EulerState } from '../teach/euler-steps';
@@ -121,6 +123,13 @@ export interface SubdivLabTestApi {
    * side-by-side pane `pane` (0, the first, by default).
    */
   projected(level: number, pane?: number): { x: number; y: number }[];
+  /**
+   * Crashes the core's worker (worker-protocol.ts, crashForTest): now (resolves once a new one is asked
+   * to start) or, with `during`, at the start of its next request of that kind (a step: 'subdivide').
+   */
+  crashCore(how: CrashKind, during?: WorkerRequestKind): Promise<void>;
+  /** The core's memory and the levels its worker keeps. */
+  coreMemory(): Promise<WorkerMemory>;
 }
 
 declare global {

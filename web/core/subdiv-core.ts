@@ -77,8 +77,10 @@ interface CoreModule {
   scheme_names(): RawResult<{ names: string[] }>;
   scheme_info(): RawResult<CoreSchemeInfo>;
   check_rules(rules: CompiledRules): RawResult<object>;
-  /** Test hooks: only in the test build of the module (wasm target subdivlab_test). */
-  heap_in_use?(): number;
+  heap_in_use(): number;
+  /** The module's memory as bytes (Emscripten replaces the view when the memory grows). */
+  HEAP8: Int8Array;
+  /** Test hook: only in the test build of the module (wasm target subdivlab_test). */
   throw_for_test?(kind: string): RawFailure;
 }
 
@@ -461,7 +463,17 @@ export function hostOf(scheme: string, rules?: RuleSet | null): HostInfo | undef
 
 /** Bytes allocated in the WebAssembly heap right now (for leak checks). */
 export function heapBytesInUse(): number {
-  return testHook('heap_in_use')();
+  return module().heap_in_use();
+}
+
+/** The core's memory: bytes allocated in its heap, and the WebAssembly memory's size (it only grows). */
+export interface CoreMemory {
+  heapInUse: number;
+  memoryBytes: number;
+}
+
+export function coreMemory(): CoreMemory {
+  return { heapInUse: module().heap_in_use(), memoryBytes: module().HEAP8.length };
 }
 
 /**
@@ -475,7 +487,7 @@ export function throwForTesting(kind: 'cgal' | 'std' | 'alloc' | 'other'): never
 }
 
 /** A test hook of the module, which only its test build has (the one vitest loads). */
-function testHook<K extends 'heap_in_use' | 'throw_for_test'>(name: K): NonNullable<CoreModule[K]> {
+function testHook<K extends 'throw_for_test'>(name: K): NonNullable<CoreModule[K]> {
   const hook = module()[name];
   if (!hook) throw new Error(`${name} is a test hook: load the test build of the core (build/wasm/test-module/)`);
   return hook.bind(module()) as NonNullable<CoreModule[K]>;

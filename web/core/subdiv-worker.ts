@@ -12,6 +12,7 @@ import { orientation } from './orientation';
 import {
   checkRules,
   compareMeshes,
+  coreMemory,
   eulerOperator,
   exportMeshChunks,
   halfedgeTable,
@@ -31,6 +32,7 @@ import {
 } from './subdiv-core';
 import { SubdivError } from './subdiv-error';
 import type {
+  CrashKind,
   LevelData,
   LevelHandle,
   WorkerRequestKind,
@@ -249,19 +251,66 @@ const handlers: Handlers = {
     checkRules(rules);
     return { value: null, transfer: [] };
   },
+  async memory() {
+    await init();
+    return { value: { ...coreMemory(), keptLevels: kept.size }, transfer: [] };
+  },
+  async crashForTest({ how, during }) {
+    if (during) {
+      crashDuring = { how, kind: during };
+      return { value: null, transfer: [] };
+    }
+    return crash(how);
+  },
 };
+
+/** The request kind crashForTest armed, and how it crashes. */
+let crashDuring: { how: CrashKind; kind: WorkerRequestKind } | null = null;
+
+function crash(how: CrashKind): Promise<never> {
+  if (how === 'uncaught') {
+    // Thrown outside any request, as a bug in the worker's own code would be: the page gets the
+    // worker's error event, and the request no answer.
+    setTimeout(() => {
+      throw new Error('uncaught error raised by crashForTest');
+    });
+    return new Promise<never>(() => {});
+  }
+  // A real WebAssembly trap (an `unreachable` instruction), as the core's own traps arrive.
+  trap();
+}
+
+/** Module bytes of `(func (export "trap") unreachable)`. */
+const TRAP_MODULE = new Uint8Array([
+  0x00, 0x61, 0x73, 0x6d, 0x01, 0x00, 0x00, 0x00, 0x01, 0x04, 0x01, 0x60, 0x00, 0x00, 0x03, 0x02, 0x01, 0x00, 0x07,
+  0x08, 0x01, 0x04, 0x74, 0x72, 0x61, 0x70, 0x00, 0x00, 0x0a, 0x05, 0x01, 0x03, 0x00, 0x00, 0x0b,
+]);
+
+function trap(): never {
+  const instance = new WebAssembly.Instance(new WebAssembly.Module(TRAP_MODULE));
+  (instance.exports.trap as () => void)();
+  throw new Error('the trap did not trap');
+}
 
 scope.onmessage = async (event) => {
   const { id, kind, args } = event.data;
   try {
+    if (crashDuring?.kind === kind) {
+      const { how } = crashDuring;
+      crashDuring = null;
+      await crash(how);
+    }
     const handler = handlers[kind] as (a: typeof args) => Promise<{ value: unknown; transfer: Transferable[] }>;
     const { value, transfer } = await handler(args);
     scope.postMessage({ id, ok: true, value }, { transfer });
   } catch (error) {
-    const data =
-      error instanceof SubdivError
-        ? { code: error.code, message: error.message, line: error.line }
-        : { code: 'internal_error' as const, message: error instanceof Error ? error.message : String(error), line: 0 };
-    scope.postMessage({ id, ok: false, error: data });
+    if (error instanceof SubdivError) {
+      scope.postMessage({ id, ok: false, error: { code: error.code, message: error.message, line: error.line } });
+      return;
+    }
+    // Anything else is a crash: a WebAssembly trap or abort (the core's instance may be broken), memory
+    // the worker could not get, a bug. The page replaces this worker (worker-client.ts).
+    const message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
+    scope.postMessage({ id, ok: false, error: { code: 'internal_error', message, line: 0 }, fatal: true });
   }
 };

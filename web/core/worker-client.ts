@@ -20,16 +20,18 @@ import type { HausdorffDistance } from './subdiv-core';
 import { SubdivError } from './subdiv-error';
 import workerUrl from './subdiv-worker.ts?worker&url';
 import type {
+  CrashKind,
   LevelData,
   LevelHandle,
   Sqrt3Check,
+  WorkerMemory,
   WorkerRequestKind,
   WorkerRequestMessage,
   WorkerRequests,
   WorkerResponseMessage,
 } from './worker-protocol';
 
-export type { LevelData, LevelHandle } from './worker-protocol';
+export type { LevelData, LevelHandle, WorkerMemory } from './worker-protocol';
 
 /** Rejection of requests that were running or queued when their session was cancelled. */
 export class CancelledError extends Error {
@@ -50,6 +52,52 @@ export class StaleLevelError extends Error {
     this.name = 'StaleLevelError';
   }
 }
+
+/**
+ * Rejection of the request that was running when the worker crashed (a
+ * WebAssembly trap or abort, memory it could not get, its error event). The
+ * client has already started a new worker; the levels the page shows are
+ * kept and made again in it when used (StaleLevelError).
+ */
+export class CoreCrashedError extends SubdivError {
+  constructor(
+    /** The request that was running (null: none). */
+    readonly request: WorkerRequestKind | null,
+    /** What the worker said, or the error event's message. */
+    readonly reason: string,
+  ) {
+    const doing = request ? ` while ${DOING[request] ?? `answering a ${request} request`}` : '';
+    super(
+      'internal_error',
+      `The SubdivLab core stopped unexpectedly${doing} (${reason}). ` +
+        'A new one was started; the levels already shown are kept.',
+    );
+    this.name = 'CoreCrashedError';
+  }
+}
+
+/** What the worker was doing, by request, for the crash message. */
+const DOING: Partial<Record<WorkerRequestKind, string>> = {
+  init: 'loading',
+  parse: 'reading a file',
+  prepare: 'preparing a mesh',
+  keep: 'keeping a level again',
+  subdivide: 'subdividing',
+  stencils: 'working out stencils',
+  basis: 'computing a basis function',
+  points: 'computing points',
+  compare: 'checking a result',
+  hausdorff: 'measuring a distance',
+  inspect: 'inspecting the mesh',
+  curvature: 'computing curvature',
+  predict: "predicting the next step's size",
+  export: 'writing a file',
+  mesh: 'copying a level',
+  halfedges: 'listing halfedges',
+  euler: 'applying an Euler operator',
+  sqrt3ByHand: 'running √3 by hand',
+  crashForTest: 'running a crash test',
+};
 
 /** Makes the worker; the default one is bundled by Vite from subdiv-worker.ts. */
 export type WorkerFactory = () => Worker;
@@ -104,6 +152,7 @@ export class WorkerClient {
   private schemes: Promise<string[]>;
   private disposed = false;
   private workerEpoch = 0;
+  private readonly crashListeners = new Set<(error: CoreCrashedError) => void>();
 
   /**
    * @param factory makes a worker (tests pass their own).
@@ -135,6 +184,36 @@ export class WorkerClient {
    */
   get epoch(): number {
     return this.workerEpoch;
+  }
+
+  /**
+   * Calls `listener` with each crash of the worker (after the new one is
+   * asked to start), whichever session's request was running; answers a
+   * function that stops the calls.
+   */
+  onCrash(listener: (error: CoreCrashedError) => void): () => void {
+    this.crashListeners.add(listener);
+    return () => this.crashListeners.delete(listener);
+  }
+
+  /** The core's memory and the number of levels the worker keeps. */
+  memory(): Promise<WorkerMemory> {
+    return this.request(this.internal, 'memory', {});
+  }
+
+  /**
+   * Test hook: crashes the worker (worker-protocol.ts) and resolves once it
+   * has been replaced; with `during`, resolves at once and the worker
+   * crashes at the start of its next request of that kind.
+   */
+  async crashForTest(how: CrashKind, during?: WorkerRequestKind): Promise<void> {
+    try {
+      await this.request(this.internal, 'crashForTest', { how, during });
+    } catch (error) {
+      if (error instanceof CoreCrashedError && !during) return;
+      throw error;
+    }
+    if (!during) throw new Error('the worker did not crash');
   }
 
   /** Terminates the worker; every pending request rejects with CancelledError. */
@@ -239,24 +318,46 @@ export class WorkerClient {
     if (this.worker) return this.worker;
     const worker = this.factory();
     worker.onmessage = (event: MessageEvent<WorkerResponseMessage>) => {
-      if (this.running && event.data.id === this.running.id) this.settle(this.running, event.data);
+      const response = event.data;
+      if (!this.running || response.id !== this.running.id) return;
+      if (!response.ok && response.fatal) this.crashed(worker, response.error.message);
+      else this.settle(this.running, response);
     };
     worker.onerror = (event: ErrorEvent) => {
       // A worker that fails to load or crashes answers nothing more: fail what runs, start afresh.
       event.preventDefault();
-      const message = event.message || 'The SubdivLab core worker failed to start.';
-      worker.terminate();
-      if (this.worker !== worker) return;
-      this.worker = null;
-      this.workerEpoch++;
-      const running = this.running;
-      // The next worker loads the core first (from the page's compiled module), as after a cancel.
-      if (running?.kind !== 'init') this.schemes = this.startInit();
-      if (running)
-        this.settle(running, { id: running.id, ok: false, error: { code: 'internal_error', message, line: 0 } });
+      this.crashed(worker, event.message || 'The SubdivLab core worker failed to start.');
     };
     this.worker = worker;
     return worker;
+  }
+
+  /**
+   * Replaces `worker`, which crashed: its levels are gone (the epoch moves
+   * on), the next one loads the core first, and the running request fails
+   * with CoreCrashedError, which the listeners hear of. A worker that fails
+   * while loading the core is not started again (it would fail the same
+   * way): the init request fails with the reason.
+   */
+  private crashed(worker: Worker, reason: string): void {
+    worker.terminate();
+    if (this.worker !== worker) return;
+    this.worker = null;
+    this.workerEpoch++;
+    const running = this.running;
+    if (running?.kind === 'init') {
+      this.settle(running, { id: running.id, ok: false, error: { code: 'internal_error', message: reason, line: 0 } });
+      return;
+    }
+    // The next worker loads the core first (from the page's compiled module), as after a cancel.
+    this.schemes = this.startInit();
+    const error = new CoreCrashedError(running?.kind ?? null, reason);
+    if (running) {
+      this.running = null;
+      running.reject(error);
+    }
+    for (const listener of this.crashListeners) listener(error);
+    this.pump();
   }
 
   private settle(request: Queued, response: WorkerResponseMessage): void {

@@ -23,7 +23,7 @@ import type {
 } from './mesh';
 import type { RuleSet } from './rule-set';
 import type { StencilTable } from './stencils';
-import type { HausdorffDistance } from './subdiv-core';
+import type { CoreMemory, HausdorffDistance } from './subdiv-core';
 import type { SubdivErrorCode } from './subdiv-error';
 
 /**
@@ -110,6 +110,23 @@ export interface WorkerRequests {
   release: { args: { handles: LevelHandle[] }; result: null };
   /** The core's verdict on a custom rule set, without a mesh: answers null or fails with its SubdivError. */
   checkRules: { args: { rules: RuleSet }; result: null };
+  /** The core's memory and the number of levels the worker keeps (for the long-session tests and the curious). */
+  memory: { args: Record<string, never>; result: WorkerMemory };
+  /**
+   * Test hook: crashes the worker as a WebAssembly trap does (`trap`: a real `unreachable`, thrown out
+   * of the request) or as a bug outside any request does (`uncaught`: the worker's error event, no
+   * answer). The page must replace the worker and keep its levels (worker-client.ts). With `during`,
+   * answers null at once and crashes at the start of the next request of that kind instead.
+   */
+  crashForTest: { args: { how: CrashKind; during?: WorkerRequestKind }; result: null };
+}
+
+/** How crashForTest crashes the worker. */
+export type CrashKind = 'trap' | 'uncaught';
+
+/** What a `memory` request answers. */
+export interface WorkerMemory extends CoreMemory {
+  keptLevels: number;
 }
 
 export type WorkerRequestKind = keyof WorkerRequests;
@@ -127,6 +144,7 @@ export interface WorkerErrorData {
   line: number;
 }
 
+/** `fatal`: the worker crashed while answering (worker-client.ts replaces it). */
 export type WorkerResponseMessage =
   | { id: number; ok: true; value: unknown }
-  | { id: number; ok: false; error: WorkerErrorData };
+  | { id: number; ok: false; error: WorkerErrorData; fatal?: true };
