@@ -1,7 +1,24 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
+import { policyMetaTag } from './web/site/content-security-policy';
 
 const page = (path: string) => fileURLToPath(new URL(path, import.meta.url));
+
+/**
+ * Writes the site's Content-Security-Policy into each built page's head,
+ * first, so it covers everything after it. Only in builds: the dev server's
+ * hot reload injects what the policy refuses.
+ */
+function contentSecurityPolicy(): Plugin {
+  return {
+    name: 'subdivlab-content-security-policy',
+    apply: 'build',
+    transformIndexHtml: {
+      order: 'post',
+      handler: (html) => html.replace(/<head>/, `<head>\n    ${policyMetaTag()}`),
+    },
+  };
+}
 
 /**
  * In the dev server, embed/subdiv-viewer.js (the built element's name, as
@@ -34,7 +51,7 @@ export default defineConfig({
   root: 'web',
   publicDir: '../public',
   base: './',
-  plugins: [embedModuleInDev()],
+  plugins: [embedModuleInDev(), contentSecurityPolicy()],
   build: {
     outDir: '../dist',
     emptyOutDir: true,

@@ -25,8 +25,6 @@ export class EmbedChrome {
 
   /** `captions`: the rows between the picture and the controls (the tool's, the distance's). */
   constructor(root: ShadowRoot, controls: EmbedControls, captions: EmbedCaption[], onCancel: () => void) {
-    const style = document.createElement('style');
-    style.textContent = EMBED_CSS;
     this.stage = el('div', { className: 'stage', attrs: { part: 'stage', role: 'region' } });
     this.placeholder = el('div', { className: 'placeholder', text: 'Loading…' });
     this.message = el('div', { className: 'message', attrs: { part: 'message', role: 'alert' } });
@@ -41,10 +39,8 @@ export class EmbedChrome {
     this.labels[0].hidden = true;
     this.stage.append(this.placeholder, this.message, this.busyBox, this.status, this.labels[0]);
     this.panes = el('div', { className: 'panes', attrs: { part: 'panes', 'data-count': '1' } }, this.stage);
-    root.append(
-      style,
-      el('div', { className: 'frame' }, this.panes, ...captions.map((c) => c.element), controls.element),
-    );
+    adoptStyles(root);
+    root.append(el('div', { className: 'frame' }, this.panes, ...captions.map((c) => c.element), controls.element));
   }
 
   /** A pane beside the others (index 1 or more): the element its viewer draws in. */
@@ -104,3 +100,23 @@ export class EmbedChrome {
     this.status.textContent = text;
   }
 }
+
+/**
+ * The element's styles in its shadow root: a constructed style sheet, which
+ * a page's Content-Security-Policy allows without 'unsafe-inline' (the
+ * SubdivLab site's refuses inline styles), shared by every viewer on the
+ * page; a `<style>` element where constructed sheets are missing.
+ */
+function adoptStyles(root: ShadowRoot): void {
+  if ('adoptedStyleSheets' in root && 'replaceSync' in CSSStyleSheet.prototype) {
+    sheet ??= new CSSStyleSheet();
+    if (sheet.cssRules.length === 0) sheet.replaceSync(EMBED_CSS);
+    root.adoptedStyleSheets = [...root.adoptedStyleSheets, sheet];
+    return;
+  }
+  const style = document.createElement('style');
+  style.textContent = EMBED_CSS;
+  root.append(style);
+}
+
+let sheet: CSSStyleSheet | null = null;

@@ -32,6 +32,9 @@ for (const key of ['alt', 'background', 'tool', 'vertex', 'split', 'distance']) 
   const value = query.get(key);
   if (value !== null) viewer.setAttribute(key, value);
 }
+// The page is the viewer alone; styled here, as the site's policy refuses inline styles.
+for (const element of [document.documentElement, document.body])
+  element.style.cssText = 'margin:0;height:100%;overflow:hidden';
 viewer.style.cssText = 'position:fixed;inset:0;width:100%;height:100%;border-radius:0';
 document.body.append(viewer);
 

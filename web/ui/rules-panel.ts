@@ -251,16 +251,16 @@ export class RulesPanel {
         this.fields.push({ ...spec, input, group: key });
         return el('div', { className: 'rules-weight' }, el('label', { attrs: { for: id }, text: spec.label }), input);
       });
-      return el(
+      const group = el(
         'fieldset',
-        {
-          className: columns ? 'rules-group columns' : 'rules-group',
-          // Four weights (the border edge rule) as 2 × 2, so each field keeps some width.
-          attrs: { 'data-group': key, style: `--columns: ${specs.length === 4 ? 2 : specs.length}` },
-        },
+        { className: columns ? 'rules-group columns' : 'rules-group', attrs: { 'data-group': key } },
         el('legend', { text: legend }),
         ...rows,
       );
+      // Four weights (the border edge rule) as 2 × 2, so each field keeps some width. Set through
+      // the CSSOM: the site's policy refuses style attributes.
+      group.style.setProperty('--columns', String(specs.length === 4 ? 2 : specs.length));
+      return group;
     });
     const omitted =
       rules.border === undefined
