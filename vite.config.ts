@@ -1,6 +1,6 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
-import { policyMetaTag } from './web/site/content-security-policy';
+import { policyMetaTag } from './web/site/content-security-policy.ts';
 
 const page = (path: string) => fileURLToPath(new URL(path, import.meta.url));
 

@@ -22,7 +22,7 @@ test('a WebAssembly trap during a step: the app says so, keeps levels 0–2, and
   await app.page.evaluate(() => window.__subdivlab?.crashCore('trap', 'subdivide'));
   await app.byTestId('controls.subdivide').click();
   await expect(app.errorBanner).toContainText(
-    'The SubdivLab core stopped unexpectedly while subdividing (RuntimeError: unreachable). ' +
+    'SubdivLab core: stopped unexpectedly while subdividing (RuntimeError: unreachable). ' +
       'A new one was started; the levels already shown are kept.',
   );
   expect(await app.idle()).toMatchObject({ busy: false, level: 2, levelCount: 3 });
@@ -54,7 +54,7 @@ test('an uncaught error in the idle worker: said once, and export and steps go o
   await app.subdivide();
   await app.page.evaluate(() => window.__subdivlab?.crashCore('uncaught'));
   await expect(app.errorBanner).toContainText(
-    'The SubdivLab core stopped unexpectedly while running a crash test (Uncaught Error: uncaught error raised by crashForTest).',
+    'SubdivLab core: stopped unexpectedly while running a crash test (Uncaught Error: uncaught error raised by crashForTest).',
   );
   expect(await app.idle()).toMatchObject({ busy: false, level: 1, levelCount: 2 });
   await test.step('the level exports from the new worker', async () => {

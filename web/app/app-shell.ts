@@ -124,7 +124,9 @@ export class AppShell {
     this.viewer = new SubdivViewer(stage, { confirmLargeStep: (info) => this.confirmLargeStep(info) });
     // A crash is said here once, whichever request was running (showError passes over its rejection).
     // It goes, as a step's error does, once a later step succeeds.
-    this.viewer.core.client.onCrash((error) => this.displayError('SubdivLab core', error, undefined, 'step'));
+    this.viewer.core.client.onCrash((error) =>
+      this.displayError('SubdivLab core', new SubdivError(error.code, error.summary), undefined, 'step'),
+    );
     this.progress = new ProgressOverlay(() => this.cancel());
     this.exportActions = new ExportActions(
       this.viewer,

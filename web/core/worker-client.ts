@@ -66,14 +66,19 @@ export class CoreCrashedError extends SubdivError {
     /** What the worker said, or the error event's message. */
     readonly reason: string,
   ) {
-    const doing = request ? ` while ${DOING[request] ?? `answering a ${request} request`}` : '';
-    super(
-      'internal_error',
-      `The SubdivLab core stopped unexpectedly${doing} (${reason}). ` +
-        'A new one was started; the levels already shown are kept.',
-    );
+    super('internal_error', `The SubdivLab core ${crashSummary(request, reason)}`);
     this.name = 'CoreCrashedError';
   }
+
+  /** The message without its subject, "The SubdivLab core", for a banner that names it. */
+  get summary(): string {
+    return crashSummary(this.request, this.reason);
+  }
+}
+
+function crashSummary(request: WorkerRequestKind | null, reason: string): string {
+  const doing = request ? ` while ${DOING[request] ?? `answering a ${request} request`}` : '';
+  return `stopped unexpectedly${doing} (${reason}). A new one was started; the levels already shown are kept.`;
 }
 
 /** What the worker was doing, by request, for the crash message. */
