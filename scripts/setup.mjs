@@ -101,12 +101,12 @@ function extractCgalMeshes() {
   run('tar', ['-xzf', archive, '-C', outDir, '--strip-components=2', ...names.map((n) => `data/meshes/${n}`)]);
 }
 
-function cmakeBuild(buildDir, configure) {
+function cmakeBuild(buildDir, configure, targets = []) {
   if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
     mkdirSync(buildDir, { recursive: true });
     run(configure[0], configure.slice(1));
   }
-  run('cmake', ['--build', buildDir, '--parallel', jobs]);
+  run('cmake', ['--build', buildDir, '--parallel', jobs, ...(targets.length > 0 ? ['--target', ...targets] : [])]);
 }
 
 const wasmBuildDir = join(root, 'build', 'wasm');
@@ -153,10 +153,17 @@ function buildWasmTests() {
   run('cmake', ['--build', wasmBuildDir, '--parallel', jobs, '--target', 'core_tests_wasm'], { env: emccEnv });
 }
 
+/**
+ * The native core and what the tests run: core_tests, and with OpenSubdiv
+ * (libosd-dev) osd_tests and osd_reference. The benchmark's programs are
+ * built by `npm run bench` itself.
+ */
 function buildNative() {
   const buildDir = join(root, 'build', 'native');
-  log('building the native core, tests and benchmark');
-  cmakeBuild(buildDir, ['cmake', '-S', 'wasm', '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']);
+  log('building the native core and its tests');
+  const targets = ['core_tests'];
+  if (existsSync('/usr/include/opensubdiv/far/topologyRefiner.h')) targets.push('osd_tests', 'osd_reference');
+  cmakeBuild(buildDir, ['cmake', '-S', 'wasm', '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release'], targets);
 }
 
 function buildCli() {
