@@ -143,7 +143,8 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
   const splitText = attr('split');
   let split = 1;
   if (splitText !== null && splitText.trim() !== '') {
-    const t = /^\s*[+]?(\d+\.?\d*|\.\d+)\s*$/.test(splitText) ? Number(splitText) : Number.NaN;
+    // With an exponent too: the split property writes String(t), and String(1e-7) is "1e-7".
+    const t = /^\s*[+]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\s*$/.test(splitText) ? Number(splitText) : Number.NaN;
     if (t >= 0 && t <= 1) split = t;
     else problems.push({ attribute: 'split', message: `split must be a number from 0 to 1, not "${splitText}".` });
   }
