@@ -5,6 +5,7 @@
  * in any order, is read as the options it gives.
  */
 import fc from 'fast-check';
+import './seed';
 import { describe, expect, it } from 'vitest';
 import { type CliArgs, DEFAULT_TOLERANCE, parseCliArgs, UsageError } from '../../../web/cli/cli-args';
 

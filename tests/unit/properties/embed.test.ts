@@ -8,6 +8,7 @@
  * throw; a valid state set through the element's properties reads back.
  */
 import fc from 'fast-check';
+import './seed';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { checkCommand } from '../../../web/embed/embed-messages';
 import { EMBED_TOOLS, readEmbedState } from '../../../web/embed/embed-state';

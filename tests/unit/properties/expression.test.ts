@@ -8,6 +8,7 @@
  * same tree (same value, bit for bit, at random points).
  */
 import fc from 'fast-check';
+import './seed';
 import { describe, expect, it } from 'vitest';
 import { parseExpression } from '../../../web/core/expression';
 import { SubdivError } from '../../../web/core/subdiv-error';

@@ -7,6 +7,7 @@
  * tables.
  */
 import fc from 'fast-check';
+import './seed';
 import { describe, expect, it } from 'vitest';
 import {
   compileRuleSet,

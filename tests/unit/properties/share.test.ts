@@ -7,6 +7,7 @@
  * (web/embed/embed-state.ts, attributesOfParams), read by readEmbedState.
  */
 import fc from 'fast-check';
+import './seed';
 import { describe, expect, it } from 'vitest';
 import { elementSnippet, iframeSnippet } from '../../../web/app/embed-snippets';
 import { paramsOfState } from '../../../web/app/url-state';

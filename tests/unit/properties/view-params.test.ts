@@ -8,6 +8,7 @@
  * written by the module's own writer reads back.
  */
 import fc from 'fast-check';
+import './seed';
 import { describe, expect, it } from 'vitest';
 import { loadViews, parseViews, type SavedView, storeViews } from '../../../web/app/saved-views';
 import { paramsText } from '../../../web/app/url-state';
