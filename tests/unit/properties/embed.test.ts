@@ -264,6 +264,13 @@ describe('postMessage commands', () => {
       reason: 'set-render-mode: unknown mode an object',
     });
     expect(checkCommand({ subdivlab: cyclic })).toEqual({ ok: false, reason: 'unknown command an object' });
+    // Nested 100,000 deep (structured clone carries it): JSON.stringify would overflow the stack.
+    let deep: unknown[] = [];
+    for (let i = 0; i < 100_000; i++) deep = [deep];
+    expect(checkCommand({ subdivlab: 'set-tool', tool: deep })).toEqual({
+      ok: false,
+      reason: 'set-tool: tool must be none, stencils, basis, split or halfedges, not an array',
+    });
     expect(checkCommand({ subdivlab: 'x'.repeat(1 << 20) })).toEqual({
       ok: false,
       reason: `unknown command "${'x'.repeat(79)}…`,

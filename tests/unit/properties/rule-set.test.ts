@@ -122,19 +122,16 @@ const nearlyValid = fc
   });
 
 describe('rule sets: any input', () => {
-  it('any text is read or refused with "rule set: WHERE: WHAT"', () => {
+  it.each([
+    ['any text', fc.string({ unit: 'binary' })],
+    ['any JSON text', fc.json()],
+    ['valid rule files', validRuleSet.map(ruleSetToText)],
+    ['rule files with a part swapped', nearlyValid.map((r) => JSON.stringify(r))],
+  ] as [string, fc.Arbitrary<string>][])('%s: read or refused with "rule set: WHERE: WHAT"', (_, texts) => {
     fc.assert(
-      fc.property(
-        fc.oneof(
-          fc.string({ unit: 'binary' }),
-          fc.json(),
-          validRuleSet.map(ruleSetToText),
-          nearlyValid.map((r) => JSON.stringify(r)),
-        ),
-        (text) => {
-          acceptedOrRefused(() => parseRuleSetText(text));
-        },
-      ),
+      fc.property(texts, (text) => {
+        acceptedOrRefused(() => parseRuleSetText(text));
+      }),
       { numRuns: 200 },
     );
   });
@@ -181,6 +178,40 @@ describe('rule sets: any input', () => {
         },
       ),
       { numRuns: 500 },
+    );
+  });
+});
+
+describe('rule sets: deep nesting', () => {
+  it('arrays or objects nested up to 100,000 deep in any field are refused, never a stack overflow', () => {
+    const fields = [
+      'format',
+      'version',
+      'host',
+      'name',
+      'vertex',
+      'edge',
+      'corner',
+      'border',
+      'vertex.self',
+      'edge.end',
+    ];
+    fc.assert(
+      fc.property(
+        fc.integer({ min: 1, max: 100_000 }),
+        fc.constantFrom(...fields),
+        fc.boolean(),
+        (depth, field, arrays) => {
+          const deep = arrays
+            ? `${'['.repeat(depth)}${']'.repeat(depth)}`
+            : `${'{"a":'.repeat(depth)}1${'}'.repeat(depth)}`;
+          const [outer, inner] = field.split('.');
+          const value = inner ? `{"${inner}": ${deep}}` : deep;
+          const text = `{"host": "pqq", "vertex": {"self": 0.5, "neighbour": 0.1}, "edge": {"end": 0.4, "wing": 0.1}, "${outer}": ${value}}`;
+          expect(acceptedOrRefused(() => parseRuleSetText(text))).toBe(false);
+        },
+      ),
+      { numRuns: 15 },
     );
   });
 });
