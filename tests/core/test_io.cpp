@@ -522,6 +522,157 @@ TEST(IoObj, FacesMayUseVerticesDefinedLater) {
   EXPECT_EQ(m.face_indices, (std::vector<std::uint32_t>{0, 1, 2}));
 }
 
+// ------------------------------------------- OBJ as course files write it
+
+// tests/fixtures/course.obj (make_fixtures.py): a house, a 2 x 2 x 2 box with
+// a ridge roof, in every form at once (mtllib, o, g, s, usemtl, v with w and
+// with a colour, vt, vn, v/vt/vn, v//vn, v/vt, negative indices, backslash
+// continuations, comments, CRLF). Counted by hand: 10 vertices, 7 faces
+// (floor, two pentagonal gables, two roof quads, two walls), 30 corners.
+TEST(IoObjCourse, TheCourseFixtureReadsWithItsCountsAndNumbers) {
+  const std::string text = fixture_text("course.obj");
+  ASSERT_NE(text.find("\r\n"), std::string::npos) << "CRLF lost";
+  for (const Result<Mesh_buffers>& r :
+       {read_mesh(text, Mesh_format::obj),
+        detail::read_mesh_general(text, Mesh_format::obj)}) {
+    ASSERT_TRUE(r.ok()) << r.status.message;
+    const Mesh_buffers& m = r.value;
+    EXPECT_EQ(m.vertex_count(), 10u);
+    EXPECT_EQ(m.face_count(), 7u);
+    EXPECT_EQ(m.face_sizes, (std::vector<std::uint32_t>{4, 5, 5, 4, 4, 4, 4}));
+    EXPECT_EQ(m.face_indices,
+              (std::vector<std::uint32_t>{0, 3, 2, 1,     // floor, v/vt/vn
+                                          0, 1, 5, 8, 4,  // v//vn, continued
+                                          2, 3, 7, 9, 6,  // v/vt
+                                          5, 6, 9, 8,     // -5 -4 -1 -2
+                                          4, 8, 9, 7,     // -6/-1/-1 ...
+                                          1, 2, 6, 5,     // plain, comment
+                                          3, 0, 4, 7}));  // continued twice
+    EXPECT_EQ(m.positions, (std::vector<double>{0, 0, 0, 2, 0, 0, 2, 2, 0, 0,
+                                                2, 0, 0, 0, 2, 2, 0, 2, 2, 2,
+                                                2, 0, 2, 2, 1, 0, 3, 1, 2, 3}));
+  }
+}
+
+TEST(IoObjCourse, ABackslashContinuesTheStatementOnTheNextLine) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  const std::vector<std::uint32_t> quad = {0, 1, 2, 3};
+  // The backslash separates tokens ("2\" then "3" is 2 and 3, not 23);
+  // blanks and a comment may follow it; LF, CRLF and lone CR end lines; a
+  // continuation line may be empty; the file may end after the backslash.
+  for (const std::string& face :
+       {std::string("f 1 2 \\\n3 4\n"), std::string("f 1 2\\\n3 4\n"),
+        std::string("f 1 2 \\  \t\n  3 4\n"),
+        std::string("f 1 2 \\ # more below\n3 4\n"),
+        std::string("f 1 2 \\\r\n3 4\r\n"), std::string("f 1 2 \\\r3 4\r"),
+        std::string("f 1 \\\n2 \\\n\\\n3 \\\n4"),
+        std::string("f \\\n 1 2 3 4\n"), std::string("f 1 2 3 4 \\"),
+        std::string("f 1 2 3 4 \\\n"), std::string("\\\nf 1 2 3 4\n")}) {
+    for (const bool fast : {true, false}) {
+      const std::string text = v + face;
+      const Result<Mesh_buffers> r =
+          fast ? read_mesh(text, Mesh_format::obj)
+               : detail::read_mesh_general(text, Mesh_format::obj);
+      ASSERT_TRUE(r.ok()) << face << ": " << r.status.message;
+      EXPECT_EQ(r.value.face_indices, quad) << face;
+    }
+  }
+  // A continued vertex; a backslash inside a comment continues nothing.
+  const Mesh_buffers m = read_ok(
+      "v 0 0 \\\n 0 1\nv 1 0 0 # not continued \\\nv 1 1 0\nv 0 1 0\n"
+      "f 1 2 3 4\n",
+      Mesh_format::obj);
+  EXPECT_EQ(m.positions,
+            (std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}));
+}
+
+TEST(IoObjCourse, LinesAfterAContinuationKeepTheirNumbers) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  // Lines 5-7 are one face; line 8 is the next statement.
+  EXPECT_EQ(read_error(v + "f 1 2 \\\n3 \\\r\n4\nq 1\n", Mesh_format::obj,
+                       Status_code::parse_error, 8),
+            "line 8: unknown OBJ statement 'q'");
+  // A face read by the fast path after a continued one names its own line.
+  EXPECT_EQ(read_error(v + "f 1 2 \\\n3 4\nf 1 2 3\n", Mesh_format::obj,
+                       Status_code::inconsistent_orientation, 7),
+            "line 7: inconsistent orientation: the faces on lines 5 and 7 both "
+            "use edge 1\u21922 in the same direction; turning 1 face around "
+            "makes them agree (repair orientation)");
+  // A continued face is named by the line it starts on.
+  EXPECT_EQ(read_error(v + "f 1 2 3\nf 1 \\\n2 4\n", Mesh_format::obj,
+                       Status_code::inconsistent_orientation, 6),
+            "line 6: inconsistent orientation: the faces on lines 5 and 6 both "
+            "use edge 1\u21922 in the same direction; turning 1 face around "
+            "makes them agree (repair orientation)");
+}
+
+TEST(IoObjCourse, AContinuedStatementRefusedNamesItsLines) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 1 1 0\n";
+  // The status keeps the first line; the message says where it runs to.
+  for (const bool fast : {true, false}) {
+    const auto read = [fast](const std::string& text) {
+      return fast ? read_mesh(text, Mesh_format::obj)
+                  : detail::read_mesh_general(text, Mesh_format::obj);
+    };
+    Result<Mesh_buffers> r = read(v + "f 1 2 \\\n x\n");
+    EXPECT_EQ(r.status.code, Status_code::parse_error);
+    EXPECT_EQ(r.status.line, 4);
+    EXPECT_EQ(r.status.message,
+              "line 4 (continued to line 5): 'x' is not a face vertex "
+              "(expected v, v/vt, v//vn or v/vt/vn)");
+    r = read(v + "v 1 \\\r\n2 \\\r\n\\\r\nabc\r\n");
+    EXPECT_EQ(r.status.line, 4);
+    EXPECT_EQ(r.status.message,
+              "line 4 (continued to line 7): z coordinate of vertex 4 is not a "
+              "number: 'abc'");
+    r = read(v + "f 1 2 \\\n-9\n");
+    EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
+    EXPECT_EQ(r.status.line, 4);
+    EXPECT_EQ(r.status.message,
+              "line 4 (continued to line 5): relative face index -9 is out of "
+              "range (3 vertices defined so far)");
+    // Only the statement's lines count: the file's last line does not.
+    r = read(v + "v 1 2 \\\n\n\n");
+    EXPECT_EQ(r.status.message,
+              "line 4 (continued to line 5): vertex needs 3 coordinates, "
+              "found 2");
+  }
+}
+
+TEST(IoObjCourse, OtherFormsAreStillRefusedWithTheirLine) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 1 1 0\n";
+  EXPECT_EQ(read_error(v + "f 1 2 3/2/3/4\n", Mesh_format::obj,
+                       Status_code::parse_error, 4),
+            "line 4: '3/2/3/4' is not a face vertex (expected v, v/vt, v//vn "
+            "or v/vt/vn)");
+  EXPECT_EQ(read_error(v + "f 1 2 -0\n", Mesh_format::obj,
+                       Status_code::invalid_mesh, 4),
+            "line 4: face index -0 is out of range (OBJ indices start at 1)");
+  EXPECT_EQ(
+      read_error(v + "v 1 2\n", Mesh_format::obj, Status_code::parse_error, 4),
+      "line 4: vertex needs 3 coordinates, found 2");
+  // A backslash that is not at the end of the data is a token of its own.
+  EXPECT_EQ(read_error(v + "f 1 \\ 2 3\n", Mesh_format::obj,
+                       Status_code::parse_error, 4),
+            "line 4: '\\' is not a face vertex (expected v, v/vt, v//vn or "
+            "v/vt/vn)");
+  EXPECT_EQ(read_error(v + "f 1 2 3\\4\n", Mesh_format::obj,
+                       Status_code::parse_error, 4),
+            "line 4: '3\\4' is not a face vertex (expected v, v/vt, v//vn or "
+            "v/vt/vn)");
+  // A continuation joins lines; it does not make a comment's line data.
+  EXPECT_EQ(read_error(v + "f 1 2 \\\n# the rest\n3\n", Mesh_format::obj,
+                       Status_code::parse_error, 6),
+            "line 6: unknown OBJ statement '3'");
+}
+
+TEST(IoObjCourse, OffHasNoContinuations) {
+  // OFF's reader is untouched: a backslash there is a value, refused.
+  EXPECT_EQ(read_error("OFF\n3 1 0\n0 0 \\\n0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                       Mesh_format::off, Status_code::parse_error, 3),
+            "line 3: z coordinate of vertex 0 is not a number: '\\'");
+}
+
 // ------------------------------------------------------------ invalid OBJ
 
 TEST(IoObjErrors, IndexOutOfRange) {

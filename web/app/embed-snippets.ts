@@ -4,7 +4,7 @@
  * state in the hash, a `<subdiv-viewer>` element and an iframe of
  * `embed.html`. Pure functions of their inputs, so tests can read them.
  */
-import { RENDER_MODES } from '../render/render-mode';
+import { OVERLAY_DEFAULTS, RENDER_MODES } from '../render/render-mode';
 import { formatViewString } from '../render/view-state';
 import { schemeInfo } from '../viewer/scheme-info';
 import { OVERLAY_KEYS, type ViewerParams } from '../viewer/viewer-params';
@@ -64,7 +64,8 @@ function joinAnd(items: string[]): string {
 
 /**
  * A `<script>` that defines the element and one `<subdiv-viewer>` in this
- * state. Scheme and levels are always written; overlays only when on.
+ * state. Scheme and levels are always written; overlays only away from
+ * their defaults, the line width when set.
  */
 export function elementSnippet(params: ViewerParams, subject: EmbedSubject): string {
   const p = withAbsoluteSrc(params, subject.appBase);
@@ -76,11 +77,14 @@ export function elementSnippet(params: ViewerParams, subject: EmbedSubject): str
   add('levels', String(p.levels ?? 0));
   if (p.renderMode) add('render-mode', p.renderMode);
   for (const [name, key] of Object.entries(OVERLAY_KEYS) as [keyof typeof OVERLAY_KEYS, string][]) {
-    if (p.overlays?.[name]) add(key);
+    // Away from its default only: present when on, "0" when off (the creases are on by default).
+    const on = p.overlays?.[name];
+    if (on !== undefined && on !== OVERLAY_DEFAULTS[name]) add(key, on ? undefined : '0');
   }
   if (p.triangulate) add('triangulate');
   if (p.view) add('view', formatViewString(p.view));
   if (p.beside && p.beside.length > 0) add('beside', p.beside.join(' '));
+  if (p.lineWidth !== undefined) add('line-width', String(p.lineWidth));
   add('controls', 'minimal');
   add('alt', describeView(p, subject));
   const script = `<script type="module" src="${escapeAttribute(`${subject.appBase}embed/subdiv-viewer.js`)}"></script>`;

@@ -208,7 +208,13 @@ export function parseCliArgs(argv: string[]): CliArgs {
       );
     }
   }
-  const tolerance = values.tolerance === undefined ? DEFAULT_TOLERANCE : Number(values.tolerance);
+  // A decimal number: Number() would read "" and " " as 0 and "0x10" as 16.
+  const tolerance =
+    values.tolerance === undefined
+      ? DEFAULT_TOLERANCE
+      : /^\s*[+]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\s*$/.test(values.tolerance)
+        ? Number(values.tolerance)
+        : Number.NaN;
   if (!(tolerance >= 0) || !Number.isFinite(tolerance)) {
     throw new UsageError(`--tolerance must be a number 0 or more, not "${values.tolerance}"`);
   }

@@ -54,10 +54,14 @@ export function readFile(path: string): Uint8Array {
   }
 }
 
-/** "file: line 7: message" from a core error (whose message may already start with "line 7: "). */
+/**
+ * "file: line 7: message" from a core error, whose message may already name
+ * the line ("line 7: ..." or, for an OBJ statement continued over lines,
+ * "line 7 (continued to line 9): ...").
+ */
 export function locate(path: string, error: SubdivError): string {
-  const prefix = `line ${error.line}: `;
-  if (error.line > 0 && !error.message.startsWith(prefix)) return `${path}: ${prefix}${error.message}`;
+  const named = new RegExp(`^line ${error.line}\\b`).test(error.message);
+  if (error.line > 0 && !named) return `${path}: line ${error.line}: ${error.message}`;
   return `${path}: ${error.message}`;
 }
 

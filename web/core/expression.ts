@@ -47,6 +47,14 @@ function fail(text: string, message: string): never {
   throw new SubdivError('invalid_argument', `expression "${text}": ${message}`);
 }
 
+/**
+ * The 1-based column of UTF-16 offset `i` in `text`, counted in characters
+ * (code points) as an editor shows them: "𝑥" before a mistake is one column.
+ */
+function column(text: string, i: number): number {
+  return [...text.slice(0, i)].length + 1;
+}
+
 function tokenize(text: string): Token[] {
   const tokens: Token[] = [];
   let i = 0;
@@ -73,7 +81,8 @@ function tokenize(text: string): Token[] {
       i++;
       continue;
     }
-    fail(text, `unexpected character "${c}" at column ${i + 1}`);
+    // The whole character, not half of a surrogate pair.
+    fail(text, `unexpected character "${String.fromCodePoint(text.codePointAt(i) ?? 0)}" at column ${column(text, i)}`);
   }
   tokens.push({ kind: 'end', pos: text.length, text: 'the end' });
   return tokens;
@@ -84,8 +93,12 @@ function tokenize(text: string): Token[] {
  * (e.g. `['n']` for a vertex rule). Throws SubdivError('invalid_argument').
  */
 export function parseExpression(text: string, allowed: readonly string[] = ['n', 'k']): Expression {
-  if (typeof text !== 'string') fail(String(text), 'not a string');
-  if (text.length > MAX_LENGTH) fail(`${text.slice(0, 20)}...`, `longer than ${MAX_LENGTH} characters`);
+  // Named by its type: String() of an object can throw (a toString that is not a function).
+  if (typeof text !== 'string') {
+    throw new SubdivError('invalid_argument', `expression: not a string but ${text === null ? 'null' : typeof text}`);
+  }
+  if (text.length > MAX_LENGTH)
+    fail(`${[...text.slice(0, 40)].slice(0, 20).join('')}...`, `longer than ${MAX_LENGTH} characters`);
   if (text.trim() === '') fail(text, 'empty');
   const tokens = tokenize(text);
   let at = 0;
@@ -95,7 +108,7 @@ export function parseExpression(text: string, allowed: readonly string[] = ['n',
     const t = peek();
     return t.kind === 'op' && t.op === op;
   };
-  const where = (t: Token) => (t.kind === 'end' ? 'at the end' : `"${t.text}" at column ${t.pos + 1}`);
+  const where = (t: Token) => (t.kind === 'end' ? 'at the end' : `"${t.text}" at column ${column(text, t.pos)}`);
 
   const expr = (): Node => {
     let left = term();
@@ -158,7 +171,7 @@ export function parseExpression(text: string, allowed: readonly string[] = ['n',
       const known = ['pi', ...allowed].join(', ');
       fail(
         text,
-        `unknown name "${t.name}" at column ${t.pos + 1} (allowed: numbers, ${known}, cos, sin, sqrt, + - * / ^ and parentheses)`,
+        `unknown name "${t.name}" at column ${column(text, t.pos)} (allowed: numbers, ${known}, cos, sin, sqrt, + - * / ^ and parentheses)`,
       );
     }
     if (isOp('(')) {

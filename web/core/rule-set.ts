@@ -42,6 +42,7 @@
  * ([4, 19, 4]/27, [1, 16, 10, 0]/27), dqq Chaikin's ([3/4, 1/4]).
  */
 import { parseExpression } from './expression';
+import { quotedValue } from './quoted-value';
 import { SubdivError } from './subdiv-error';
 
 /** Refinement hosts of CGAL's Subdivision_method_3. */
@@ -158,16 +159,16 @@ export function parseRuleSet(json: unknown): RuleSet {
   if (!isRecord(json)) refuse('file', 'expected a JSON object');
   checkKeys('file', json, ['format', 'version', 'name', 'description', 'host', 'vertex', 'edge', 'corner', 'border']);
   if (json.format !== undefined && json.format !== 'subdivlab-rules') {
-    refuse('format', `expected "subdivlab-rules", got ${JSON.stringify(json.format)}`);
+    refuse('format', `expected "subdivlab-rules", got ${quotedValue(json.format)}`);
   }
   if (json.version !== undefined && json.version !== 1)
-    refuse('version', `expected 1, got ${JSON.stringify(json.version)}`);
+    refuse('version', `expected 1, got ${quotedValue(json.version)}`);
   for (const key of ['name', 'description'] as const) {
     if (json[key] !== undefined && typeof json[key] !== 'string') refuse(key, 'expected a string');
   }
   const host = json.host;
   if (typeof host !== 'string' || !HOSTS.includes(host as RuleHost)) {
-    refuse('host', `expected one of ${HOSTS.join(', ')}, got ${JSON.stringify(host)}`);
+    refuse('host', `expected one of ${HOSTS.join(', ')}, got ${quotedValue(host)}`);
   }
   const h = host as RuleHost;
   const out: RuleSet = { host: h };

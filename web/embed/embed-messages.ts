@@ -12,6 +12,7 @@
  * Events: `ready`, `load`, `level-change`, `error`, `progress`, `stencil`, `basis`.
  */
 import type { SchemeName } from '../core/mesh';
+import { quotedValue } from '../core/quoted-value';
 import { RENDER_MODES, type RenderMode } from '../render/render-mode';
 import { checkedView, parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
@@ -76,7 +77,7 @@ export function checkCommand(data: unknown): Checked {
       if (typeof data.scheme === 'string' && isSchemeName(data.scheme)) {
         return { ok: true, command: { subdivlab: 'set-scheme', scheme: data.scheme } };
       }
-      return { ok: false, reason: `set-scheme: unknown scheme ${JSON.stringify(data.scheme)}` };
+      return { ok: false, reason: `set-scheme: unknown scheme ${quotedValue(data.scheme)}` };
     case 'subdivide':
       return { ok: true, command: { subdivlab: 'subdivide' } };
     case 'set-level':
@@ -93,7 +94,7 @@ export function checkCommand(data: unknown): Checked {
     case 'set-render-mode': {
       const known = RENDER_MODES.find((m) => m.mode === data.mode);
       if (known) return { ok: true, command: { subdivlab: 'set-render-mode', mode: known.mode } };
-      return { ok: false, reason: `set-render-mode: unknown mode ${JSON.stringify(data.mode)}` };
+      return { ok: false, reason: `set-render-mode: unknown mode ${quotedValue(data.mode)}` };
     }
     case 'set-overlay':
       if (
@@ -117,7 +118,7 @@ export function checkCommand(data: unknown): Checked {
       if (typeof data.tool !== 'string' || !isEmbedTool(data.tool)) {
         return {
           ok: false,
-          reason: `set-tool: tool must be none, stencils, basis, split or halfedges, not ${JSON.stringify(data.tool)}`,
+          reason: `set-tool: tool must be none, stencils, basis, split or halfedges, not ${quotedValue(data.tool)}`,
         };
       }
       if (data.vertex === undefined) return { ok: true, command: { subdivlab: 'set-tool', tool: data.tool } };
@@ -132,6 +133,6 @@ export function checkCommand(data: unknown): Checked {
       }
       return { ok: false, reason: 'set-split needs t, a number from 0 to 1' };
     default:
-      return { ok: false, reason: `unknown command ${JSON.stringify(name)}` };
+      return { ok: false, reason: `unknown command ${quotedValue(name)}` };
   }
 }

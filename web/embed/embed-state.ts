@@ -6,7 +6,7 @@
 import type { SchemeName } from '../core/mesh';
 import { DEFAULT_LINE_WIDTH, MAX_LINE_WIDTH, MIN_LINE_WIDTH, parseLineWidth } from '../render/line-style';
 import { OVERLAY_DEFAULTS, type OverlayName, RENDER_MODES, type RenderMode } from '../render/render-mode';
-import { parseViewString, type ViewState } from '../render/view-state';
+import { formatViewString, parseViewString, type ViewState } from '../render/view-state';
 import { isSchemeName } from '../viewer/scheme-info';
 import {
   CONTROLS_MODES,
@@ -16,6 +16,7 @@ import {
   parseBeside,
   parseFlag,
   parseLevels,
+  type ViewerParams,
 } from '../viewer/viewer-params';
 
 export interface EmbedState {
@@ -143,7 +144,8 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
   const splitText = attr('split');
   let split = 1;
   if (splitText !== null && splitText.trim() !== '') {
-    const t = /^\s*[+]?(\d+\.?\d*|\.\d+)\s*$/.test(splitText) ? Number(splitText) : Number.NaN;
+    // With an exponent too: the split property writes String(t), and String(1e-7) is "1e-7".
+    const t = /^\s*[+]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\s*$/.test(splitText) ? Number(splitText) : Number.NaN;
     if (t >= 0 && t <= 1) split = t;
     else problems.push({ attribute: 'split', message: `split must be a number from 0 to 1, not "${splitText}".` });
   }
@@ -198,4 +200,28 @@ export function readEmbedState(attr: (name: string) => string | null): EmbedStat
 function isColour(value: string): boolean {
   if (value === 'transparent') return true;
   return typeof CSS === 'undefined' || CSS.supports('color', value);
+}
+
+/**
+ * The attributes that start an element in the state of link parameters, in
+ * a fixed order: what the iframe route sets from its query. An overlay is
+ * written only away from its default: present when on, "0" when off (the
+ * creases are on unless creases="0").
+ */
+export function attributesOfParams(params: ViewerParams): [string, string][] {
+  const out: [string, string][] = [];
+  if (params.src) out.push(['src', params.src]);
+  if (params.scheme) out.push(['scheme', params.scheme]);
+  if (params.levels !== undefined) out.push(['levels', String(params.levels)]);
+  if (params.renderMode) out.push(['render-mode', params.renderMode]);
+  for (const [name, on] of Object.entries(params.overlays ?? {}) as [OverlayName, boolean][]) {
+    if (on !== OVERLAY_DEFAULTS[name]) out.push([OVERLAY_KEYS[name], on ? '' : '0']);
+  }
+  if (params.triangulate) out.push(['triangulate', '']);
+  if (params.view) out.push(['view', formatViewString(params.view)]);
+  if (params.rules) out.push(['rules', params.rules]);
+  if (params.controls) out.push(['controls', params.controls]);
+  if (params.beside) out.push(['beside', params.beside.join(' ')]);
+  if (params.lineWidth !== undefined) out.push(['line-width', String(params.lineWidth)]);
+  return out;
 }

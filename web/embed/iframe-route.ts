@@ -4,9 +4,9 @@
  * platforms that accept only iframes. It posts the element's events to the
  * parent page and takes commands from it (embed-messages.ts).
  */
-import { formatViewString } from '../render/view-state';
-import { OVERLAY_KEYS, parseViewerParams } from '../viewer/viewer-params';
+import { parseViewerParams } from '../viewer/viewer-params';
 import { checkCommand, type EmbedEventMessage, type EmbedEventName } from './embed-messages';
+import { attributesOfParams } from './embed-state';
 import { SubdivViewerElement } from './subdiv-viewer-element';
 
 if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', SubdivViewerElement);
@@ -14,19 +14,8 @@ if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer',
 const query = new URLSearchParams(window.location.search);
 const { params, problems } = parseViewerParams(query);
 const viewer = document.createElement('subdiv-viewer');
-if (params.src) viewer.setAttribute('src', params.src);
-if (params.scheme) viewer.setAttribute('scheme', params.scheme);
-if (params.levels !== undefined) viewer.setAttribute('levels', String(params.levels));
-if (params.renderMode) viewer.setAttribute('render-mode', params.renderMode);
-for (const [name, on] of Object.entries(params.overlays ?? {})) {
-  if (on) viewer.setAttribute(OVERLAY_KEYS[name as keyof typeof OVERLAY_KEYS], '');
-}
-if (params.triangulate) viewer.setAttribute('triangulate', '');
-if (params.view) viewer.setAttribute('view', formatViewString(params.view));
-if (params.rules) viewer.setAttribute('rules', params.rules);
-viewer.setAttribute('controls', params.controls ?? 'minimal');
-if (params.beside) viewer.setAttribute('beside', params.beside.join(' '));
-if (params.lineWidth !== undefined) viewer.setAttribute('line-width', String(params.lineWidth));
+for (const [name, value] of attributesOfParams(params)) viewer.setAttribute(name, value);
+if (!params.controls) viewer.setAttribute('controls', 'minimal');
 // Read by the element, which names a bad value in an `error` event (posted to the parent).
 for (const key of ['alt', 'background', 'tool', 'vertex', 'split', 'distance']) {
   const value = query.get(key);

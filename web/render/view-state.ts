@@ -33,19 +33,26 @@ export function parseViewState(text: string | null): ViewState | null {
   }
 }
 
-/** Shortest decimal that keeps `x` to 6 significant digits ("1.5", "-0.000123"). */
-function compact(x: number): string {
-  const s = Number(x.toPrecision(6)).toString();
+/** Shortest decimal that keeps `x` to `digits` significant digits ("1.5", "-0.000123"). */
+function compact(x: number, digits: number): string {
+  const s = Number(x.toPrecision(digits)).toString();
   return s === '-0' ? '0' : s;
 }
 
 /**
  * The camera as a short string for links and attributes: nine numbers,
  * position, target and up, separated by commas (6 significant digits),
- * e.g. `2.1,1.7,3.8,0,0,0,0,1,0`.
+ * e.g. `2.1,1.7,3.8,0,0,0,0,1,0`. A view that 6 digits would make unusable
+ * (an eye so close to a far-off target that both round to the same point)
+ * gets the fewest more digits that keep it usable; 17 give every double back.
  */
 export function formatViewString(view: ViewState): string {
-  return [...view.position, ...view.target, ...view.up].map(compact).join(',');
+  const numbers = [...view.position, ...view.target, ...view.up];
+  for (let digits = 6; digits < 17; digits++) {
+    const text = numbers.map((x) => compact(x, digits)).join(',');
+    if (parseViewString(text) !== null) return text;
+  }
+  return numbers.map((x) => compact(x, 17)).join(',');
 }
 
 /** Reads {@link formatViewString}'s form; null unless it is nine finite numbers with a usable up vector. */

@@ -120,17 +120,38 @@ class Line_reader {
   }
 
   /// The current line's tokens (from its start, whatever a fast path read);
-  /// ends the line.
+  /// ends the line, and with read_continuations() the lines it continues
+  /// into (continued_lines() says how many).
   void take_line(std::vector<std::string_view>& tokens) {
-    const char* e = line_begin_;
-    while (e != end_ && *e != '\n' && *e != '\r') ++e;
-    std::string_view content(line_begin_,
-                             static_cast<std::size_t>(e - line_begin_));
-    const std::size_t hash = content.find('#');
-    if (hash != std::string_view::npos) content = content.substr(0, hash);
-    split(content, tokens);
-    pos_ = after_line(e);
+    tokens.clear();
+    continued_ = 0;
+    const char* b = line_begin_;
+    for (;;) {
+      const char* e = b;
+      while (e != end_ && *e != '\n' && *e != '\r') ++e;
+      std::string_view content(b, static_cast<std::size_t>(e - b));
+      const std::size_t hash = content.find('#');
+      if (hash != std::string_view::npos) content = content.substr(0, hash);
+      const bool more = continuations_ && ends_in_backslash(content);
+      split(content, tokens);
+      pos_ = after_line(e);
+      // A backslash on the file's last line continues into nothing.
+      if (!more || pos_ == text_.size()) return;
+      ++line_;
+      ++continued_;
+      b = begin_ + pos_;
+    }
   }
+
+  /// From now on a backslash at the end of a line's data (blanks and a
+  /// comment may follow it) joins the next line to it, as OBJ has it; the
+  /// backslash separates tokens as a blank does. The fast paths need not
+  /// know: a backslash is neither a number, an index nor a token's end, so
+  /// they decline such a line and take_line reads it.
+  void read_continuations() { continuations_ = true; }
+  /// How many lines after its first the statement take_line read last
+  /// continued into.
+  int continued_lines() const { return continued_; }
 
   /// Number of the last line of the text (where "the file ends").
   int last_line() const { return line_ == 0 ? 1 : line_; }
@@ -163,8 +184,16 @@ class Line_reader {
     if (p != end_) p += (*p == '\r' && p + 1 != end_ && p[1] == '\n') ? 2 : 1;
     return static_cast<std::size_t>(p - begin_);
   }
+  /// Whether `s` ends in a backslash and blanks; if so, drops them.
+  static bool ends_in_backslash(std::string_view& s) {
+    std::size_t n = s.size();
+    while (n > 0 && is_blank(s[n - 1])) --n;
+    if (n == 0 || s[n - 1] != '\\') return false;
+    s = s.substr(0, n - 1);
+    return true;
+  }
+  /// Appends the blank-separated tokens of `s`.
   static void split(std::string_view s, std::vector<std::string_view>& tokens) {
-    tokens.clear();
     std::size_t i = 0;
     while (i < s.size()) {
       while (i < s.size() && is_blank(s[i])) ++i;
@@ -182,6 +211,8 @@ class Line_reader {
   const char* line_begin_ = nullptr;
   const char* cursor_ = nullptr;
   bool tag_comments_ = false;
+  bool continuations_ = false;
+  int continued_ = 0;
 };
 
 enum class Number { ok, not_number, not_finite };
@@ -1114,10 +1145,121 @@ bool parse_obj_corner(std::string_view t, long long& v) {
   return parse_int(vn, dummy);  // v//vn or v/vt/vn
 }
 
+/// One OBJ statement the general path reads (its tokens `tok`, from line
+/// `line`) into `mesh`, `face_lines` and `tags`; a failure names `line`.
+Result<Mesh_buffers> read_obj_statement(
+    const std::vector<std::string_view>& tok, int line, Mesh_buffers& mesh,
+    std::vector<int>& face_lines, Tag_list& tags) {
+  const std::string_view k = tok[0];
+  if (k == "v") {
+    if (tok.size() < 4) {
+      return parse_failure(line, "vertex needs 3 coordinates, found " +
+                                     std::to_string(tok.size() - 1));
+    }
+    const std::size_t v = mesh.vertex_count() + 1;
+    for (int a = 0; a < 3; ++a) {
+      double x = 0;
+      Result<Mesh_buffers> r;
+      if (!read_coordinate(tok[1 + a], line,
+                           std::string(axis_name[a]) +
+                               " coordinate of vertex " + std::to_string(v),
+                           x, r)) {
+        return r;
+      }
+      mesh.positions.push_back(x);
+    }
+    // w or a vertex colour: accepted, not kept.
+    for (std::size_t i = 4; i < tok.size(); ++i) {
+      double x = 0;
+      if (parse_double(tok[i], x) == Number::not_number) {
+        return parse_failure(line, "value " + std::to_string(i) +
+                                       " of vertex " + std::to_string(v) +
+                                       " is not a number: " + quoted(tok[i]));
+      }
+    }
+  } else if (k == "f") {
+    const long long defined = static_cast<long long>(mesh.vertex_count());
+    for (std::size_t i = 1; i < tok.size(); ++i) {
+      long long v = 0;
+      if (!parse_obj_corner(tok[i], v)) {
+        return parse_failure(
+            line,
+            quoted(tok[i]) +
+                " is not a face vertex (expected v, v/vt, v//vn or v/vt/vn)");
+      }
+      long long index = 0;  // 0-based
+      if (v == 0) {
+        // Named as the file spells it: "-0" is no relative index either.
+        Result<Mesh_buffers> r;
+        r.status =
+            Status::error(Status_code::invalid_mesh,
+                          at(line) + "face index " +
+                              std::string(tok[i].substr(0, tok[i].find('/'))) +
+                              " is out of range (OBJ indices start at 1)",
+                          line);
+        return r;
+      }
+      if (v < 0) {
+        index = defined + v;
+        if (index < 0) {
+          Result<Mesh_buffers> r;
+          r.status = Status::error(
+              Status_code::invalid_mesh,
+              at(line) + "relative face index " +
+                  std::string(tok[i].substr(0, tok[i].find('/'))) +
+                  " is out of range (" + std::to_string(defined) +
+                  " vertices defined so far)",
+              line);
+          return r;
+        }
+      } else {
+        // Positive indices may refer to vertices defined further down;
+        // check_buffers checks them against the final count.
+        index = v - 1;
+        if (index >= 0xffffffffll) {
+          Result<Mesh_buffers> r;
+          r.status = Status::error(
+              Status_code::invalid_mesh,
+              at(line) + "face index " +
+                  std::string(tok[i].substr(0, tok[i].find('/'))) +
+                  " is out of range (more than any mesh can hold)",
+              line);
+          return r;
+        }
+      }
+      mesh.face_indices.push_back(static_cast<std::uint32_t>(index));
+    }
+    mesh.face_sizes.push_back(static_cast<std::uint32_t>(tok.size() - 1));
+    face_lines.push_back(line);
+  } else if (k == "t") {
+    Result<Mesh_buffers> r;
+    if (!read_tag(tok, line, tags, r)) return r;
+  } else if (!is_ignored_obj_statement(k)) {
+    return parse_failure(line, "unknown OBJ statement " + quoted(k));
+  }
+  return {};
+}
+
+/// A failure of a statement that runs from line `first` to line `last`
+/// (continued with backslashes): "line 7 (continued to line 9): ..." where
+/// the message said "line 7: ...". The status keeps line 7, where the
+/// statement starts.
+Result<Mesh_buffers> continued_failure(Result<Mesh_buffers>&& r, int first,
+                                       int last) {
+  const std::string prefix = at(first);
+  if (last > first && r.status.message.rfind(prefix, 0) == 0) {
+    r.status.message = "line " + std::to_string(first) +
+                       " (continued to line " + std::to_string(last) +
+                       "): " + r.status.message.substr(prefix.size());
+  }
+  return std::move(r);
+}
+
 Result<Mesh_buffers> read_obj(std::string_view text,
                               std::vector<std::uint32_t>* corner_halfedges,
                               const Read_options& options, bool fast) {
   Line_reader in(text);
+  in.read_continuations();
   std::vector<std::string_view> tok;
   int line = 0;
   Mesh_buffers mesh;
@@ -1126,90 +1268,12 @@ Result<Mesh_buffers> read_obj(std::string_view text,
   while (fast_obj_run(in, fast, mesh, face_lines, line) ==
          Run_stop::slow_line) {
     in.take_line(tok);
-    const std::string_view k = tok[0];
-    if (k == "v") {
-      if (tok.size() < 4) {
-        return parse_failure(line, "vertex needs 3 coordinates, found " +
-                                       std::to_string(tok.size() - 1));
-      }
-      const std::size_t v = mesh.vertex_count() + 1;
-      for (int a = 0; a < 3; ++a) {
-        double x = 0;
-        Result<Mesh_buffers> r;
-        if (!read_coordinate(tok[1 + a], line,
-                             std::string(axis_name[a]) +
-                                 " coordinate of vertex " + std::to_string(v),
-                             x, r)) {
-          return r;
-        }
-        mesh.positions.push_back(x);
-      }
-      // w or a vertex colour: accepted, not kept.
-      for (std::size_t i = 4; i < tok.size(); ++i) {
-        double x = 0;
-        if (parse_double(tok[i], x) == Number::not_number) {
-          return parse_failure(line, "value " + std::to_string(i) +
-                                         " of vertex " + std::to_string(v) +
-                                         " is not a number: " + quoted(tok[i]));
-        }
-      }
-    } else if (k == "f") {
-      const long long defined = static_cast<long long>(mesh.vertex_count());
-      for (std::size_t i = 1; i < tok.size(); ++i) {
-        long long v = 0;
-        if (!parse_obj_corner(tok[i], v)) {
-          return parse_failure(
-              line,
-              quoted(tok[i]) +
-                  " is not a face vertex (expected v, v/vt, v//vn or v/vt/vn)");
-        }
-        long long index = 0;  // 0-based
-        if (v == 0) {
-          Result<Mesh_buffers> r;
-          r.status = Status::error(
-              Status_code::invalid_mesh,
-              at(line) +
-                  "face index 0 is out of range (OBJ indices start at 1)",
-              line);
-          return r;
-        }
-        if (v < 0) {
-          index = defined + v;
-          if (index < 0) {
-            Result<Mesh_buffers> r;
-            r.status = Status::error(
-                Status_code::invalid_mesh,
-                at(line) + "relative face index " +
-                    std::string(tok[i].substr(0, tok[i].find('/'))) +
-                    " is out of range (" + std::to_string(defined) +
-                    " vertices defined so far)",
-                line);
-            return r;
-          }
-        } else {
-          // Positive indices may refer to vertices defined further down;
-          // check_buffers checks them against the final count.
-          index = v - 1;
-          if (index >= 0xffffffffll) {
-            Result<Mesh_buffers> r;
-            r.status = Status::error(
-                Status_code::invalid_mesh,
-                at(line) + "face index " +
-                    std::string(tok[i].substr(0, tok[i].find('/'))) +
-                    " is out of range (more than any mesh can hold)",
-                line);
-            return r;
-          }
-        }
-        mesh.face_indices.push_back(static_cast<std::uint32_t>(index));
-      }
-      mesh.face_sizes.push_back(static_cast<std::uint32_t>(tok.size() - 1));
-      face_lines.push_back(line);
-    } else if (k == "t") {
-      Result<Mesh_buffers> r;
-      if (!read_tag(tok, line, tags, r)) return r;
-    } else if (!is_ignored_obj_statement(k)) {
-      return parse_failure(line, "unknown OBJ statement " + quoted(k));
+    // A line of a lone backslash continued into blanks holds no statement.
+    if (tok.empty()) continue;
+    Result<Mesh_buffers> r =
+        read_obj_statement(tok, line, mesh, face_lines, tags);
+    if (!r.ok()) {
+      return continued_failure(std::move(r), line, line + in.continued_lines());
     }
   }
   return finish(std::move(mesh), face_lines, 1, corner_halfedges,
