@@ -259,17 +259,27 @@ test('a bad value in the hash is named in a notice; the rest of the link applies
 });
 
 /** Attributes of the first element named `tag` in an HTML snippet, parsed by the browser. */
+/**
+ * The attributes of the snippet's `tags`, parsed in a blank page: the app's
+ * policy refuses the iframe snippet's style attribute even in a DOMParser
+ * document (the snippet is for the teacher's page, not ours).
+ */
 async function parseSnippet(app: SubdivLabPage, code: string, tags: string[]): Promise<Record<string, string>[]> {
-  return app.page.evaluate(
-    ({ code, tags }) => {
-      const doc = new DOMParser().parseFromString(code, 'text/html');
-      return tags.map((tag) => {
-        const e = doc.querySelector(tag);
-        return e ? Object.fromEntries([...e.attributes].map((a) => [a.name, a.value])) : {};
-      });
-    },
-    { code, tags },
-  );
+  const blank = await app.page.context().newPage();
+  try {
+    return await blank.evaluate(
+      ({ code, tags }) => {
+        const doc = new DOMParser().parseFromString(code, 'text/html');
+        return tags.map((tag) => {
+          const e = doc.querySelector(tag);
+          return e ? Object.fromEntries([...e.attributes].map((a) => [a.name, a.value])) : {};
+        });
+      },
+      { code, tags },
+    );
+  } finally {
+    await blank.close();
+  }
 }
 
 test('Embed… gives an element and an iframe snippet with the exact state; Copy, Esc', async ({ app, context }) => {
