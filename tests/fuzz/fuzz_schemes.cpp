@@ -13,8 +13,8 @@
 //     to the next call; a second call numbers the vertices from its own
 //     Surface_mesh, so not the same indices);
 //   - the fast hosts equal CGAL's hosts (cgal_hosts): same faces, points
-//     to 1e-9 of the result's size, same control edges (untagged meshes:
-//     CGAL's hosts do not crease).
+//     to 1e-9 of the result's size, same control edges (untagged meshes
+//     and the default border rules: CGAL's hosts do not crease).
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -75,7 +75,11 @@ void fuzz_schemes(const std::uint8_t* data, std::size_t size) {
     require_result(mesh, o, two.value, what + " level 2");
     require_result(mesh, one_level, one.value, what + " level 1");
 
-    if (!mesh.tags.empty()) continue;
+    // CGAL's hosts do not crease: compare where nothing is creased (no
+    // tags, and the border rules not overridden to sharpen corners).
+    if (!mesh.tags.empty() ||
+        (o.boundary && *o.boundary != Boundary_interpolation::edge_only))
+      continue;
     Subdivide_options next = one_level;
     next.start_level = o.start_level + 1;
     const Result<Mesh_buffers> stepped = subdivide_mesh(one.value, next);
