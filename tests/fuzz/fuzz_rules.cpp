@@ -203,10 +203,15 @@ void fuzz_rules(const std::uint8_t* data, std::size_t size) {
     o.cgal_hosts = true;
     const Result<Mesh_buffers> cgal = subdivide_mesh(buffers, o);
     require_sane_status(cgal.status, "subdivide_mesh (custom, CGAL's hosts)");
-    require(cgal.status.code == fast.status.code,
+    // Weights near the largest double overflow in one order of summing and
+    // not in the other (fuzz_schemes): only then may the verdicts differ.
+    const bool overflow =
+        fast.status.message.find("overflows") != std::string::npos ||
+        cgal.status.message.find("overflows") != std::string::npos;
+    require(cgal.status.code == fast.status.code || overflow,
             "the fast hosts and CGAL's disagree on custom rules",
             what + ": " + fast.status.message + " | " + cgal.status.message);
-    if (fast.ok())
+    if (fast.ok() && cgal.ok())
       require(same_result(fast.value, cgal.value),
               "the fast hosts differ from CGAL's on custom rules", what);
 

@@ -14,7 +14,8 @@
 //     Surface_mesh, so not the same indices);
 //   - the fast hosts equal CGAL's hosts (cgal_hosts): same faces, points
 //     to 1e-9 of the result's size, same control edges (untagged meshes
-//     and the default border rules: CGAL's hosts do not crease).
+//     and the default border rules: CGAL's hosts do not crease), unless
+//     CGAL's overflow near the largest double where the fast hosts do not.
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -98,6 +99,13 @@ void fuzz_schemes(const std::uint8_t* data, std::size_t size) {
     cgal.cgal_hosts = true;
     const Result<Mesh_buffers> reference = subdivide_mesh(mesh, cgal);
     require_sane_status(reference.status, "subdivide_mesh on CGAL's hosts");
+    // Near the largest double, CGAL's masks can overflow where the fast
+    // hosts' do not (its Doo-Sabin quad corner adds 9, 3, 3 and 1 times the
+    // corners and divides by 16 last): the fast hosts are what the product
+    // runs, CGAL's the reference for ordinary input.
+    if (!reference.ok() &&
+        reference.status.message.find("overflows") != std::string::npos)
+      continue;
     require(reference.ok(), "CGAL's hosts refuse what the fast hosts take",
             what + ": " + reference.status.message);
     require(same_result(two.value, reference.value),
