@@ -109,7 +109,7 @@ function wasm32Tests() {
  * Seconds each fuzz target runs in npm test: the step (build and run) must
  * stay within about 2.5 of CI's 20 minutes (README, Fuzzing).
  */
-const FUZZ_SECONDS = 8;
+const FUZZ_SECONDS = 6;
 
 /** The fuzz targets' short pass: every target, FUZZ_SECONDS each, two at a time. */
 function fuzzTests() {
