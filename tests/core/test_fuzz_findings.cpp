@@ -7,6 +7,7 @@
 
 #include "core/custom_rules.h"
 #include "core/mesh_io.h"
+#include "core/subdivide.h"
 #include "fixture_text.h"
 
 namespace subdivlab {
@@ -62,6 +63,38 @@ TEST(FuzzFindings, AnUnknownHostIsEscapedInTheMessage) {
   EXPECT_EQ(s.message,
             "custom rules: unknown host \"a\\x1B[2J\\x00b\" (expected pqq, "
             "ptq, dqq or sqrt3)");
+}
+
+// fuzz_schemes: predict_size refused a mesh with an interior vertex of two
+// edges for loop with triangulate, while the run, which checks the mesh
+// once triangulated (the quad's diagonal gives that vertex a third edge),
+// refined it. The prediction now checks the triangulated mesh too.
+TEST(FuzzFindings, PredictSizeChecksATriangulatedMeshAsTheRunDoes) {
+  const Result<Mesh_buffers> in = read_mesh(
+      fixture_text("two-edge-vertex-triangulated.obj"), Mesh_format::obj);
+  ASSERT_TRUE(in.ok()) << in.status.message;
+  Subdivide_options o;
+  o.scheme = "loop";
+  o.levels = 2;
+  o.triangulate = true;
+  const Result<Mesh_buffers> run = subdivide_mesh(in.value, o);
+  ASSERT_TRUE(run.ok()) << run.status.message;
+  const Result<Size_prediction> p = predict_size(in.value, o);
+  ASSERT_TRUE(p.ok()) << p.status.message;
+  // Triangulated: 4 vertices, 6 edges, 3 triangles (a disk); Loop gives
+  // V + E vertices and 4 F faces a step: 10 and 12, then 31 and 48.
+  EXPECT_EQ(run.value.vertex_count(), 31u);
+  EXPECT_EQ(run.value.face_count(), 48u);
+  EXPECT_EQ(p.value.vertices, 31u);
+  EXPECT_EQ(p.value.faces, 48u);
+  // Not triangulated, loop refuses the mesh in both; Catmull-Clark takes
+  // the vertex of two edges as it is.
+  o.triangulate = false;
+  EXPECT_FALSE(predict_size(in.value, o).ok());
+  EXPECT_FALSE(subdivide_mesh(in.value, o).ok());
+  o.scheme = "catmull-clark";
+  EXPECT_TRUE(predict_size(in.value, o).ok());
+  EXPECT_TRUE(subdivide_mesh(in.value, o).ok());
 }
 
 }  // namespace
