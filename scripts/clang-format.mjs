@@ -9,7 +9,7 @@ import { fileURLToPath } from 'node:url';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const check = process.argv.includes('--check');
-const DIRS = ['wasm/src', 'wasm/bench', 'tests/core'];
+const DIRS = ['wasm/src', 'wasm/bench', 'tests/core', 'tests/fuzz'];
 
 function sources(dir) {
   return readdirSync(join(root, dir), { withFileTypes: true, recursive: true })

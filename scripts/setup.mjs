@@ -7,8 +7,10 @@
 //   4. the WASM module (CMake + Emscripten; rebuilt only when sources changed)
 //   5. the native core and its tests (with --native)
 //   6. tests/core as a wasm32 program for Node (with --wasm-tests)
+//   7. with --fuzz, only the Debian packages and the libFuzzer targets of
+//      tests/fuzz (clang 14, ASan + UBSan) in build/fuzz/, for scripts/fuzz.mjs
 // CMake builds use 2 jobs; CMAKE_BUILD_PARALLEL_LEVEL sets another number.
-// Usage: node scripts/setup.mjs [--wasm-only] [--native] [--wasm-tests]
+// Usage: node scripts/setup.mjs [--wasm-only] [--native] [--wasm-tests] | --fuzz
 import { spawnSync } from 'node:child_process';
 import { existsSync, lstatSync, mkdirSync, readFileSync, statSync, symlinkSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -34,6 +36,12 @@ const DEBIAN_PACKAGES = [
   // The figure tests render the PDF and EPS exports: pdftoppm and pdfinfo (poppler), gs (ghostscript).
   'poppler-utils',
   'ghostscript',
+  // The fuzz targets (tests/fuzz): clang 14 and its libFuzzer and sanitizer
+  // runtimes (libclang_rt.fuzzer-x86_64.a), and llvm-symbolizer for their
+  // stack traces.
+  'clang-14',
+  'libclang-rt-14-dev',
+  'llvm-14',
 ];
 
 function log(message) {
@@ -179,8 +187,19 @@ function buildCli() {
   }
 }
 
+/** build/fuzz/subdivlab_fuzz and its fuzz_<target> links (tests/fuzz/CMakeLists.txt). */
+function buildFuzz() {
+  const buildDir = join(root, 'build', 'fuzz');
+  log('building the fuzz targets (no-op when sources are unchanged)');
+  cmakeBuild(buildDir, ['cmake', '-S', 'tests/fuzz', '-B', buildDir, '-DCMAKE_CXX_COMPILER=clang++-14']);
+}
+
 try {
   installDebianPackages();
+  if (args.has('--fuzz')) {
+    buildFuzz();
+    process.exit(0);
+  }
   if (!args.has('--wasm-only')) {
     installNpmDependencies();
     extractCgalMeshes();

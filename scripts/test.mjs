@@ -5,11 +5,14 @@
 //                  setup.mjs --native; osd_tests compares creasing with OpenSubdiv)
 //   3. wasm32      the same tests built with em++, run by Node
 //                  (build/wasm/core_tests_wasm.cjs; setup.mjs --wasm-tests)
-//   4. unit        vitest (tests/unit, Node against the real WASM and the CLI)
-//   5. e2e         Playwright (tests/e2e), when playwright.config.ts exists
+//   4. fuzz        the libFuzzer targets of tests/fuzz (clang, ASan + UBSan;
+//                  setup.mjs --fuzz), each for a few seconds from the
+//                  fixtures (scripts/fuzz.mjs); a finding fails the step
+//   5. unit        vitest (tests/unit, Node against the real WASM and the CLI)
+//   6. e2e         Playwright (tests/e2e), when playwright.config.ts exists
 // Each step's output is shown; the first failing step stops the run with a
 // non-zero exit. The last line sums the tests: "N passed, M failed".
-// Usage: node scripts/test.mjs [--skip lint,native,wasm32,unit,e2e] (for local runs)
+// Usage: node scripts/test.mjs [--skip lint,native,wasm32,fuzz,unit,e2e] (for local runs)
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -102,6 +105,23 @@ function wasm32Tests() {
   return googleTest('core_tests_wasm', process.execPath, [join(root, 'build', 'wasm', 'core_tests_wasm.cjs')]);
 }
 
+/**
+ * Seconds each fuzz target runs in npm test: the step (build and run) must
+ * stay within about 2.5 of CI's 20 minutes (README, Fuzzing).
+ */
+const FUZZ_SECONDS = 6;
+
+/** The fuzz targets' short pass: every target, FUZZ_SECONDS each, two at a time. */
+function fuzzTests() {
+  heading('fuzz: build (setup.mjs --fuzz)');
+  if (run(process.execPath, [join(root, 'scripts', 'setup.mjs'), '--fuzz']) !== 0) return false;
+  heading(`fuzz: every target for ${FUZZ_SECONDS} s`);
+  const script = join(root, 'scripts', 'fuzz.mjs');
+  const status = run(process.execPath, [script, '--seconds', String(FUZZ_SECONDS), '--fresh']);
+  count(status, status === 0 ? 1 : 0, 0);
+  return status === 0;
+}
+
 function unitTests() {
   heading('unit: vitest');
   const json = join(resultsDir, 'vitest.json');
@@ -131,6 +151,7 @@ const steps = [
   ['lint', lint],
   ['native', nativeTests],
   ['wasm32', wasm32Tests],
+  ['fuzz', fuzzTests],
   ['unit', unitTests],
   ['e2e', e2eTests],
 ];

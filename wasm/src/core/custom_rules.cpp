@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dqq_border_3.h"
+#include "file_kind.h"
 #include "refine/dual_masks.h"
 #include "refine/primal_masks.h"
 #include "table_masks_3.h"
@@ -52,7 +53,7 @@ bool known_host(const std::string& h) {
 
 Status check_custom_rules(const Custom_rules& r) {
   if (!known_host(r.host))
-    return refuse("unknown host \"" + r.host +
+    return refuse("unknown host \"" + detail::printable(r.host) +
                   "\" (expected pqq, ptq, dqq or sqrt3)");
 
   if (r.host == "dqq") {

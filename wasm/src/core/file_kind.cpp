@@ -24,7 +24,9 @@ bool is_gltf_json(std::string_view bytes) {
 
 }  // namespace
 
-std::string quoted(std::string_view tok) {
+std::string quoted(std::string_view tok) { return "'" + printable(tok) + "'"; }
+
+std::string printable(std::string_view tok) {
   constexpr std::size_t max = 40;
   std::size_t n = std::min(tok.size(), max);
   // A UTF-8 sequence has at most 3 continuation bytes (10xxxxxx).
@@ -32,7 +34,7 @@ std::string quoted(std::string_view tok) {
                      (static_cast<unsigned char>(tok[n]) & 0xC0) == 0x80;
        ++back)
     --n;
-  std::string s = "'";
+  std::string s;
   for (const char c : tok.substr(0, n)) {
     const auto u = static_cast<unsigned char>(c);
     if (u < 0x20 || u == 0x7F) {
@@ -44,7 +46,7 @@ std::string quoted(std::string_view tok) {
     }
   }
   if (n < tok.size()) s += "...";
-  return s + "'";
+  return s;
 }
 
 const char* other_file_kind(std::string_view bytes) {

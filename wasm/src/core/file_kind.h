@@ -28,6 +28,10 @@ Status check_not_other_file(std::string_view bytes);
 /// one-line error a CLI prints.
 std::string quoted(std::string_view tok);
 
+/// quoted's text without the quotes (followed by "..." when cut), for a
+/// name a message shows bare (a PLY element's, a rule set's host).
+std::string printable(std::string_view tok);
+
 /// The sentence naming the formats read, for messages.
 inline constexpr const char* formats_read =
     "SubdivLab reads OFF, OBJ, PLY and STL.";

@@ -898,6 +898,13 @@ Result<Mesh_buffers> finish(Mesh_buffers&& mesh,
   detail::Check_result check = detail::check_orientation(
       mesh, naming, corner_halfedges, options.repair_orientation, reversed);
   if (!check.status.ok()) {
+    // inconsistent_orientation offers a repair: a tag the file holds wrong
+    // (the tags do not depend on the faces' orientation) would fail the
+    // repaired read, so it is named first.
+    if (check.status.code == Status_code::inconsistent_orientation &&
+        !apply_tags(std::move(tags), mesh, r))
+      return r;
+    r = Result<Mesh_buffers>{};
     r.status = std::move(check.status);
     return r;
   }

@@ -458,7 +458,9 @@ std::size_t min_element_bytes(const Ply_element& e, bool ascii) {
 }
 
 std::string element_name(const Ply_element& e, std::uint64_t i) {
-  return std::string(e.name) + " " + std::to_string(i) + " (of " +
+  // The name as the header gave it, control bytes escaped (the one-line
+  // message a CLI prints).
+  return printable(e.name) + " " + std::to_string(i) + " (of " +
          std::to_string(e.count) + ")";
 }
 

@@ -593,7 +593,17 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
       refine::Level level;
       if (s.ok()) {
         level = refine::level_from_buffers(in, corner_halfedges);
-        s = check_two_valent_vertices(level, options);
+        // A mesh triangulated first is checked as the run checks it, once
+        // triangulated (prepare): a diagonal can give a vertex of two
+        // edges a third.
+        if (!(needs_triangles(options) && options.triangulate &&
+              counts_of(level).non_triangles > 0)) {
+          s = check_two_valent_vertices(level, options);
+        } else {
+          Mesh mesh;
+          Counts triangulated_counts;
+          s = prepare(in, options, mesh, triangulated_counts);
+        }
       }
       if (!s.ok()) {
         result.status = s;
