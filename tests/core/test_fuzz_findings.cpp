@@ -97,5 +97,35 @@ TEST(FuzzFindings, PredictSizeChecksATriangulatedMeshAsTheRunDoes) {
   EXPECT_TRUE(subdivide_mesh(in.value, o).ok());
 }
 
+// fuzz_schemes: Loop with triangulate never returned on a hexagon that
+// touches itself (a corner on another of its sides). CGAL's triangulate_face
+// accepted it and linked two triangles' halfedges into one cycle, which a
+// later degree() walked forever. Such a face is now refused, named.
+TEST(FuzzFindings, AHexagonThatTouchesItselfIsRefusedNotTriangulated) {
+  const Result<Mesh_buffers> in =
+      read_mesh(fixture_text("touching-hexagon.obj"), Mesh_format::obj);
+  ASSERT_TRUE(in.ok()) << in.status.message;
+  Subdivide_options o;
+  o.scheme = "loop";
+  o.levels = 1;
+  o.triangulate = true;
+  const char* message =
+      "face 0 (6 vertices) could not be triangulated: it is degenerate (no "
+      "area), self-intersecting or touches itself; loop needs triangles";
+  const Result<Mesh_buffers> run = subdivide_mesh(in.value, o);
+  EXPECT_EQ(run.status.code, Status_code::invalid_mesh);
+  EXPECT_EQ(run.status.message, message);
+  const Result<Size_prediction> p = predict_size(in.value, o);
+  EXPECT_EQ(p.status.code, Status_code::invalid_mesh);
+  EXPECT_EQ(p.status.message, message);
+  // Schemes on polygons take it as it is: Catmull-Clark makes 6 + 4 quads
+  // of the hexagon and the quad.
+  o.scheme = "catmull-clark";
+  o.triangulate = false;
+  const Result<Mesh_buffers> quads = subdivide_mesh(in.value, o);
+  ASSERT_TRUE(quads.ok()) << quads.status.message;
+  EXPECT_EQ(quads.value.face_count(), 10u);
+}
+
 }  // namespace
 }  // namespace subdivlab

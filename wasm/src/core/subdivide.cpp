@@ -141,22 +141,60 @@ Status check_two_valent_vertices(const Mesh& mesh,
   return Status::success();
 }
 
+/// Collects the triangles triangulate_face makes of one polygon.
+struct Subface_collector {
+  std::vector<Mesh::Face_index>* subfaces;
+  void before_subface_creations(Mesh::Face_index) { subfaces->clear(); }
+  void after_subface_created(Mesh::Face_index f) { subfaces->push_back(f); }
+  void after_subface_creations() {}
+};
+
+/// Whether `subfaces`, what triangulate_face made of a polygon of `degree`
+/// vertices, are degree − 2 triangles whose halfedge cycles are whole and
+/// disjoint. CGAL's constrained triangulation accepts a polygon that touches
+/// itself (a corner on another side) and then links halfedges of two
+/// triangles into one cycle: a broken mesh, whose next walk may never end.
+/// Every walk here is bounded.
+bool whole_triangles(const Mesh& mesh,
+                     const std::vector<Mesh::Face_index>& subfaces,
+                     std::size_t degree) {
+  if (subfaces.size() + 2 != degree) return false;
+  std::vector<Mesh::Halfedge_index> seen;
+  for (Mesh::Face_index f : subfaces) {
+    Mesh::Halfedge_index h = mesh.halfedge(f);
+    for (int i = 0; i < 3; ++i) {
+      if (mesh.face(h) != f || mesh.prev(mesh.next(h)) != h) return false;
+      seen.push_back(h);
+      h = mesh.next(h);
+    }
+    if (h != mesh.halfedge(f)) return false;
+  }
+  std::sort(seen.begin(), seen.end());
+  return std::adjacent_find(seen.begin(), seen.end()) == seen.end();
+}
+
 /// Triangulates every polygon as triangulate_faces does (CGAL's
 /// triangulate_face, face by face), naming the first it refuses: one whose
 /// normal is zero (degenerate), or past 4 vertices one whose projection is
-/// not a simple polygon. Faces are numbered as in the input buffers.
+/// not a simple polygon, or one that touches itself (see whole_triangles).
+/// Faces are numbered as in the input buffers.
 Status triangulate_all(Mesh& mesh, const std::string& scheme) {
   std::vector<Mesh::Face_index> polygons;
   for (Mesh::Face_index f : mesh.faces())
     if (mesh.degree(f) > 3) polygons.push_back(f);
+  std::vector<Mesh::Face_index> subfaces;
   for (Mesh::Face_index f : polygons) {
     const std::size_t degree = mesh.degree(f);
-    if (CGAL::Polygon_mesh_processing::triangulate_face(f, mesh)) continue;
+    subfaces.clear();
+    if (CGAL::Polygon_mesh_processing::triangulate_face(
+            f, mesh, CGAL::parameters::visitor(Subface_collector{&subfaces})) &&
+        whole_triangles(mesh, subfaces, degree))
+      continue;
     return Status::error(
         Status_code::invalid_mesh,
         "face " + std::to_string(f.idx()) + " (" + std::to_string(degree) +
             " vertices) could not be triangulated: it is degenerate (no "
-            "area) or self-intersecting; " +
+            "area), self-intersecting or touches itself; " +
             scheme + " needs triangles");
   }
   return Status::success();
