@@ -92,23 +92,6 @@ Mesh_buffers buffers_from(FuzzedDataProvider& in) {
   return m;
 }
 
-bool same_surface_mesh(const Mesh& a, const Mesh& b) {
-  if (a.number_of_vertices() != b.number_of_vertices() ||
-      a.number_of_halfedges() != b.number_of_halfedges() ||
-      a.number_of_faces() != b.number_of_faces())
-    return false;
-  for (const Mesh::Halfedge_index h : a.halfedges())
-    if (a.target(h) != b.target(h) || a.next(h) != b.next(h) ||
-        a.face(h) != b.face(h))
-      return false;
-  for (const Mesh::Vertex_index v : a.vertices())
-    if (a.point(v) != b.point(v) || a.halfedge(v) != b.halfedge(v))
-      return false;
-  for (const Mesh::Face_index f : a.faces())
-    if (a.halfedge(f) != b.halfedge(f)) return false;
-  return true;
-}
-
 }  // namespace
 
 void fuzz_build(const std::uint8_t* data, std::size_t size) {

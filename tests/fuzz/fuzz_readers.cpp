@@ -26,24 +26,6 @@ bool same_reading(const Result<Mesh_buffers>& a,
          a.value.tags.notes == b.value.tags.notes;
 }
 
-/// Both Surface_meshes hold the same elements, numbered alike.
-bool same_surface_mesh(const Mesh& a, const Mesh& b) {
-  if (a.number_of_vertices() != b.number_of_vertices() ||
-      a.number_of_halfedges() != b.number_of_halfedges() ||
-      a.number_of_faces() != b.number_of_faces())
-    return false;
-  for (const Mesh::Halfedge_index h : a.halfedges())
-    if (a.target(h) != b.target(h) || a.next(h) != b.next(h) ||
-        a.face(h) != b.face(h))
-      return false;
-  for (const Mesh::Vertex_index v : a.vertices())
-    if (a.point(v) != b.point(v) || a.halfedge(v) != b.halfedge(v))
-      return false;
-  for (const Mesh::Face_index f : a.faces())
-    if (a.halfedge(f) != b.halfedge(f)) return false;
-  return true;
-}
-
 void require_accepted_mesh(const Mesh_buffers& mesh,
                            const std::vector<std::uint32_t>& halfedges) {
   require_valid_mesh(mesh, "read_mesh's mesh");

@@ -50,6 +50,23 @@ bool same_mesh(const Mesh_buffers& a, const Mesh_buffers& b) {
          a.face_indices == b.face_indices && same_tags(a.tags, b.tags);
 }
 
+bool same_surface_mesh(const Mesh& a, const Mesh& b) {
+  if (a.number_of_vertices() != b.number_of_vertices() ||
+      a.number_of_halfedges() != b.number_of_halfedges() ||
+      a.number_of_faces() != b.number_of_faces())
+    return false;
+  for (const Mesh::Halfedge_index h : a.halfedges())
+    if (a.target(h) != b.target(h) || a.next(h) != b.next(h) ||
+        a.face(h) != b.face(h))
+      return false;
+  for (const Mesh::Vertex_index v : a.vertices())
+    if (a.point(v) != b.point(v) || a.halfedge(v) != b.halfedge(v))
+      return false;
+  for (const Mesh::Face_index f : a.faces())
+    if (a.halfedge(f) != b.halfedge(f)) return false;
+  return true;
+}
+
 bool read_any(std::string_view bytes, Mesh_buffers& mesh) {
   const Result<Mesh_format> format = detect_format(bytes);
   require_sane_status(format.status, "detect_format");

@@ -50,6 +50,9 @@ bool same_mesh(const Mesh_buffers& a, const Mesh_buffers& b);
 /// Same tags, notes aside.
 bool same_tags(const Mesh_tags& a, const Mesh_tags& b);
 
+/// Both Surface_meshes hold the same elements, numbered alike.
+bool same_surface_mesh(const Mesh& a, const Mesh& b);
+
 /// The mesh read_mesh gives for `bytes`, the format told by detect_format
 /// as the app's "auto" does; false when it is refused. The status must be
 /// sane either way.
