@@ -171,7 +171,8 @@ TEST(HostileInput, AFaceTriangulationRefusesIsNamed) {
   EXPECT_EQ(r.status.code, Status_code::invalid_mesh);
   EXPECT_EQ(r.status.message,
             "face 1 (4 vertices) could not be triangulated: it is degenerate "
-            "(no area) or self-intersecting; loop needs triangles");
+            "(no area), self-intersecting or touches itself; loop needs "
+            "triangles");
 
   // A pentagon whose second corner lies far beyond the others: its outline
   // crosses itself, which the constrained Delaunay triangulation refuses.
@@ -185,7 +186,8 @@ TEST(HostileInput, AFaceTriangulationRefusesIsNamed) {
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status.message,
             "face 0 (5 vertices) could not be triangulated: it is degenerate "
-            "(no area) or self-intersecting; sqrt3 needs triangles");
+            "(no area), self-intersecting or touches itself; sqrt3 needs "
+            "triangles");
 }
 
 }  // namespace
