@@ -18,6 +18,7 @@ import { RENDER_MODES } from '../../../web/render/render-mode';
 import { checkedView, formatViewString } from '../../../web/render/view-state';
 import { PANE_SCHEMES, SCHEME_NAMES } from '../../../web/viewer/scheme-info';
 import { CONTROLS_MODES, MAX_PARAM_LEVELS, OVERLAY_KEYS } from '../../../web/viewer/viewer-params';
+import { anything } from './arbitraries';
 
 /**
  * HTMLElement's attribute storage, for Node: the element class under test
@@ -184,19 +185,6 @@ const COMMANDS = [
   'set-tool',
   'set-split',
 ];
-
-/** Anything structured clone can carry: bigints, dates, maps, cycles, null prototypes ... */
-const anything = fc.anything({
-  withBigInt: true,
-  withBoxedValues: true,
-  withDate: true,
-  withMap: true,
-  withSet: true,
-  withNullPrototype: true,
-  withObjectString: true,
-  withSparseArray: true,
-  withTypedArray: true,
-});
 
 /** Field values a command might carry, right or wrong. */
 const field = fc.oneof(
