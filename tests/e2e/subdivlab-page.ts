@@ -223,9 +223,13 @@ export class SubdivLabPage {
   /** Waits until the rules panel says its rules are applied and `level` is computed again (no step running). */
   async rulesApplied(level: number): Promise<SubdivLabTestState> {
     await expect(this.byTestId('rules.status')).toHaveText('These rules are applied.');
+    // The status says "applied" as soon as the rules are taken; the levels follow after a
+    // prediction round trip, so wait for the levels' own rules to be the applied ones.
     await this.page.waitForFunction((k) => {
       const s = window.__subdivlab?.state();
-      return s !== undefined && !s.busy && (s.level === k || s.lastError !== null);
+      if (s === undefined || s.busy) return false;
+      const computed = JSON.stringify(s.levelRules) === JSON.stringify(s.customRules);
+      return (s.level === k && computed) || s.lastError !== null;
     }, level);
     const state = await this.state();
     expect(state.lastError, 'recomputing with the rules failed').toBeNull();

@@ -329,6 +329,7 @@ export class AppShell {
           canvas: this.viewer.view.size,
           viewOffset: this.viewer.view.viewOffset,
           customRules: this.customRules,
+          levelRules: this.viewer.steps().options.rules ?? null,
           smoothBoundary: !this.fixedBoundary,
           modelSource: this.source ? { ...this.source } : null,
           notice: this.notice.text,

@@ -44,6 +44,8 @@ export interface SubdivLabTestState {
   edgeSegments: number;
   /** Rules the custom scheme steps with (the rules panel's last Apply, preset or file); null before any. */
   customRules: RuleSet | null;
+  /** Rules the shown levels were computed with: customRules once its recomputation is done. */
+  levelRules: RuleSet | null;
   /** quad-triangle's border option (false: "Fixed boundary" is checked). */
   smoothBoundary: boolean;
   /** Where the shown model came from: a URL as given (sample, ?src=, link) or a local file. */
