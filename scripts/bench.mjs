@@ -25,6 +25,8 @@ import { benchApp, printApp } from './bench-app.mjs';
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const SCHEMES = ['catmull-clark', 'loop', 'doo-sabin', 'sqrt3', 'quad-triangle'];
 const OSD_SCHEMES = ['catmull-clark', 'loop'];
+/** The custom scheme with the rules panel's presets (public/rules/NAME.json), one on each host. */
+const CUSTOM_SCHEMES = ['custom:catmull-clark', 'custom:loop', 'custom:doo-sabin', 'custom:sqrt3'];
 
 const argv = process.argv.slice(2);
 /** Takes `flag` out of argv; true when it was there. */
@@ -65,7 +67,8 @@ const { benchWasm, benchIo, benchInspect } = await import(pathToFileURL(wasmBund
  * The rows: one level of each scheme on the bench mesh, then two levels of
  * quad-triangle and Doo-Sabin, then Catmull-Clark and Loop to 1-5 M faces
  * (two levels of bunny00 and of CGAL's refined_elephant, one level of a
- * 1.2 M-face input), where the fast hosts' targets are set.
+ * 1.2 M-face input), then two of custom rules on each host, where the fast
+ * hosts' targets are set.
  */
 function schemeRows() {
   const rows = SCHEMES.map((scheme) => ({ mesh: meshPath, scheme, levels: 1, runs }));
@@ -87,6 +90,8 @@ function schemeRows() {
     if (!mesh) continue;
     for (const scheme of OSD_SCHEMES) rows.push({ mesh, scheme, levels, runs: big });
   }
+  // Custom rules on the four hosts, to 0.7-1.2 M faces (their target counts there).
+  for (const scheme of CUSTOM_SCHEMES) rows.push({ mesh: defaultMesh, scheme, levels: 2, runs: big });
   return rows;
 }
 
@@ -135,7 +140,7 @@ async function benchSchemes() {
     const args = [row.mesh, String(row.runs), String(row.levels), row.scheme];
     const n = JSON.parse(run(join(buildDir, 'subdiv_bench_native'), args).trim());
     const o = withOsd ? JSON.parse(run(osdBench, args).trim()) : null;
-    const [w] = await benchWasm(row.mesh, row.runs, [row.scheme], row.levels);
+    const [w] = await benchWasm(row.mesh, row.runs, [row.scheme], row.levels, join(root, 'public', 'rules'));
     for (const [who, r] of [
       ['WASM', w],
       ['OpenSubdiv', o],
@@ -162,10 +167,10 @@ async function benchSchemes() {
 
   const num = (x, n) => (x === null ? '–' : x.toFixed(n)).padStart(10);
   const head = ['faces out', 'WASM ms', 'ns/face', 'B/face', 'CGAL ms', 'OSD ms', '/CGAL', '/OSD'];
-  console.log(`\n${pad('scheme', 15)}${pad('mesh', 22)}${head.map((h) => h.padStart(10)).join('')}`);
+  console.log(`\n${pad('scheme', 22)}${pad('mesh', 22)}${head.map((h) => h.padStart(10)).join('')}`);
   for (const r of rows) {
     console.log(
-      `${pad(r.scheme, 15)}${pad(r.mesh, 22)}${String(r.faces).padStart(10)}${num(r.wasm_ms, 1)}` +
+      `${pad(r.scheme, 22)}${pad(r.mesh, 22)}${String(r.faces).padStart(10)}${num(r.wasm_ms, 1)}` +
         `${num(r.wasm_ns_per_face, 0)}${num(r.peak_bytes_per_face, 0)}${num(r.native_ms, 1)}${num(r.osd_ms, 1)}` +
         `${num(r.ratio, 2)}${num(r.ratio_osd, 2)}`,
     );
@@ -287,7 +292,8 @@ const machine = `${cpus()[0]?.model ?? 'unknown CPU'}, ${cpus().length} cores, N
 if (!appOnly && !inspectOnly) console.log(`\n(median of ${runs} runs after one warm-up; ${machine})`);
 // A page load and two steps per run: at most three.
 const appRuns = Math.min(runs, 3);
-const app = ioOnly || inspectOnly ? [] : await benchApp(appRuns);
+const appMeshes = { refined_elephant: cgalDataMesh('refined_elephant.off') };
+const app = ioOnly || inspectOnly ? [] : await benchApp(appRuns, appMeshes);
 if (app.length > 0) printApp(app, appRuns);
 
 mkdirSync(join(root, 'build'), { recursive: true });

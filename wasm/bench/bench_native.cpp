@@ -2,6 +2,8 @@
 // a mesh with CGAL's own hosts (Subdivide_options::cgal_hosts; the fast hosts
 // are the WASM side's), natively, and prints one
 // JSON object per scheme (scheme, faces, median_ms, runs_ms) on stdout.
+// A scheme `custom:NAME` runs the custom scheme with the rules of preset NAME
+// (custom_rules_preset, the weights of public/rules/NAME.json) on CGAL's host.
 // Usage: subdiv_bench_native MESH.off RUNS LEVELS [SCHEME...]
 #include <algorithm>
 #include <chrono>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "bench_report.h"
+#include "core/custom_rules.h"
 #include "core/mesh_io.h"
 #include "core/subdivide.h"
 
@@ -53,6 +56,11 @@ int main(int argc, char** argv) {
   for (const std::string& scheme : schemes) {
     Subdivide_options options;
     options.scheme = scheme;
+    const std::string custom = "custom:";
+    if (scheme.compare(0, custom.size(), custom) == 0) {
+      options.scheme = "custom";
+      options.custom = custom_rules_preset(scheme.substr(custom.size()));
+    }
     options.levels = levels;
     options.cgal_hosts = true;  // the reference: CGAL's own hosts
     std::vector<double> times;

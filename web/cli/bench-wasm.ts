@@ -5,9 +5,11 @@
  * into build/cli/bench-wasm.mjs.
  */
 import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
-import type { MeshFormat, SchemeName } from '../core/mesh';
+import type { MeshFormat, SchemeName, SubdivideOptions } from '../core/mesh';
+import { parseRuleSetText } from '../core/rule-set';
 import {
   exportMesh,
   exportMeshChunks,
@@ -34,26 +36,43 @@ function median(values: number[]): number {
   return n % 2 ? v[(n - 1) / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
-/** One untimed warm-up run and `runs` timed runs of `levels` levels of each scheme on the mesh at `path`. */
+/**
+ * The options of a bench scheme: a scheme's name, or `custom:NAME`, the
+ * custom scheme with the rule file `rulesDir`/NAME.json (a preset of the
+ * rules panel; the native bench runs the same preset).
+ */
+function benchOptions(scheme: string, levels: number, rulesDir: string): SubdivideOptions {
+  const custom = /^custom:(.+)$/.exec(scheme);
+  if (!custom) return { scheme: scheme as SchemeName, levels };
+  const rules = parseRuleSetText(readFileSync(join(rulesDir, `${custom[1]}.json`), 'utf8'));
+  return { scheme: 'custom', levels, rules };
+}
+
+/**
+ * One untimed warm-up run and `runs` timed runs of `levels` levels of each
+ * scheme (see benchOptions) on the mesh at `path`.
+ */
 export async function benchWasm(
   path: string,
   runs: number,
-  schemes: SchemeName[],
+  schemes: string[],
   levels = 1,
+  rulesDir = '',
 ): Promise<SchemeTiming[]> {
   await initNode();
   const mesh = parseMesh(readFileSync(path, 'utf8'), formatFromFileName(path) ?? 'off');
   return schemes.map((scheme) => {
+    const options = benchOptions(scheme, levels, rulesDir);
     const times: number[] = [];
     let faces = 0;
     for (let r = 0; r <= runs; r++) {
       const start = performance.now();
-      const out = subdivide(mesh, { scheme, levels });
+      const out = subdivide(mesh, options);
       const ms = performance.now() - start;
       faces = out.faceSizes.length;
       if (r > 0) times.push(ms);
     }
-    const peak_bytes = predictSize(mesh, { scheme, levels }).peakBytes;
+    const peak_bytes = predictSize(mesh, options).peakBytes;
     return { scheme, faces, median_ms: median(times), runs_ms: times, peak_bytes };
   });
 }
