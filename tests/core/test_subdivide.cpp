@@ -371,6 +371,88 @@ TEST(SubdivideCounts, EverySchemeEveryFixtureLevelsOneToThree) {
   }
 }
 
+// The app predicts the next step of a level it keeps from the level's counts
+// (facts), without its arrays: the same figures as from the mesh, for every
+// scheme and custom host, on the closed fixtures' levels 1 and 2, control
+// edges included.
+TEST(SubdivideCounts, ClosedLevelsPredictedFromTheirCountsAsFromTheirArrays) {
+  std::vector<std::pair<std::string, std::string>> runs;  // scheme, preset
+  for (const std::string& scheme : scheme_names())
+    if (scheme != "custom") runs.emplace_back(scheme, "");
+  for (const char* preset : {"catmull-clark", "loop", "doo-sabin", "sqrt3"})
+    runs.emplace_back("custom", preset);
+  int compared = 0;
+  for (const auto& [scheme, preset] : runs) {
+    for (const Case& c : kCases) {
+      if (!c.closed) continue;
+      Subdivide_options o = options_for(scheme, 1, 0, true);
+      if (!preset.empty()) o.custom = custom_rules_preset(preset);
+      Mesh_buffers level = load(c.fixture);
+      for (int k = 1; k <= 2; ++k) {
+        o.start_level = k - 1;
+        level = subdivided(level, o);
+        const std::string what = scheme + " " + preset + " level " +
+                                 std::to_string(k) + " of " + c.fixture;
+        const Mesh_facts facts = compute_facts(level).value;
+        ASSERT_TRUE(facts.closed) << what;
+        Closed_mesh_counts counts;
+        counts.vertices = facts.vertices;
+        counts.edges = facts.edges;
+        counts.faces = facts.faces;
+        counts.triangles = facts.triangles;
+        counts.control_edges = level.control_edges.size() / 2;
+        Subdivide_options next = o;
+        next.start_level = k;
+        for (int levels : {1, 2}) {
+          next.levels = levels;
+          const Result<Size_prediction> a = predict_size(level, next);
+          const Result<Size_prediction> b = predict_size(counts, next);
+          ASSERT_TRUE(a.ok()) << what << ": " << a.status.message;
+          ASSERT_TRUE(b.ok()) << what << ": " << b.status.message;
+          EXPECT_EQ(b.value.vertices, a.value.vertices) << what;
+          EXPECT_EQ(b.value.edges, a.value.edges) << what;
+          EXPECT_EQ(b.value.faces, a.value.faces) << what;
+          EXPECT_EQ(b.value.peak_bytes, a.value.peak_bytes) << what;
+          ++compared;
+        }
+      }
+    }
+  }
+  // 7 schemes and 4 custom hosts, 8 closed fixtures, 2 levels, 2 predictions.
+  EXPECT_EQ(compared, 11 * 8 * 2 * 2);
+}
+
+TEST(SubdivideCounts, CountsOfQuadsRefuseTrianglesAsTheArraysDo) {
+  const Mesh_buffers cube = load("cube.off");
+  Closed_mesh_counts counts;
+  counts.vertices = 8;
+  counts.edges = 12;
+  counts.faces = 6;
+  const Subdivide_options loop = options_for("loop", 1);
+  const Result<Size_prediction> a = predict_size(cube, loop);
+  const Result<Size_prediction> b = predict_size(counts, loop);
+  ASSERT_FALSE(a.ok());
+  ASSERT_FALSE(b.ok());
+  EXPECT_EQ(b.status.code, a.status.code);
+  EXPECT_EQ(b.status.message, a.status.message);
+  // Triangulating first needs the faces: said, not guessed.
+  const Result<Size_prediction> c =
+      predict_size(counts, options_for("loop", 1, 0, true));
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.status.code, Status_code::invalid_argument);
+  counts.triangles = 7;
+  EXPECT_EQ(predict_size(counts, options_for("catmull-clark", 1)).status.code,
+            Status_code::invalid_argument);
+  // With the counts right, the cube's Catmull-Clark step: 26, 48, 24.
+  counts.triangles = 0;
+  const Result<Size_prediction> cc =
+      predict_size(counts, options_for("catmull-clark", 1));
+  ASSERT_TRUE(cc.ok());
+  EXPECT_EQ(cc.value.vertices, 26u);
+  EXPECT_EQ(cc.value.edges, 48u);
+  EXPECT_EQ(cc.value.faces, 24u);
+}
+
 TEST(SubdivideCounts, CubeCatmullClarkAbsoluteNumbers) {
   // 8/12/6 -> 26/48/24 -> 98/192/96 -> 386/768/384.
   const Mesh_buffers cube = load("cube.off");

@@ -11,10 +11,11 @@ import {
   meshFacts,
   parseMesh,
   predictSize,
+  predictSizeOfLevel,
   schemeNames,
   subdivide,
 } from '../../web/core/subdiv-core';
-import { expectCounts, expectSamePoints, fixtureText, loadFixture } from './test-helpers';
+import { expectCounts, expectSamePoints, fixtureText, loadFixture, rulePreset } from './test-helpers';
 
 beforeAll(async () => {
   await initNode();
@@ -162,6 +163,35 @@ describe('predictSize', () => {
     const ico = loadFixture('icosahedron.off');
     const p = predictSize(ico, { scheme: 'loop', levels: 4 });
     expect(p.faces).toBe(20 * 4 ** 4);
+  });
+
+  it('predicts the next step of a closed level from its facts, with the figures of its arrays', () => {
+    const rules = rulePreset('sqrt3');
+    for (const [fixture, options] of [
+      ['cube.off', { scheme: 'catmull-clark' }],
+      ['icosahedron.off', { scheme: 'loop' }],
+      ['torus-quad.off', { scheme: 'doo-sabin' }],
+      ['octahedron.off', { scheme: 'custom', rules }],
+      ['cube.off', { scheme: 'loop', triangulate: true }],
+    ] as const) {
+      const control = loadFixture(fixture);
+      for (const k of [1, 2]) {
+        const level = subdivide(control, { ...options, levels: k });
+        const next = { ...options, levels: 1, startLevel: k };
+        // The memory limit is what the heap can still take, which moves between calls: not compared.
+        const { memoryLimitBytes: _a, ...fromFacts } = predictSizeOfLevel(level, meshFacts(level), next);
+        const { memoryLimitBytes: _b, ...fromArrays } = predictSize(level, next);
+        expect(fromFacts, `${fixture} ${options.scheme} level ${k}`).toEqual(fromArrays);
+      }
+    }
+    // It reads the facts, not the arrays: the cube's arrays with a torus's facts give the torus's figures.
+    const torus = loadFixture('torus-quad.off');
+    const cube = loadFixture('cube.off');
+    const cc = { scheme: 'catmull-clark', levels: 1, memoryLimitBytes: 2 ** 30 } as const;
+    expect(predictSizeOfLevel(cube, meshFacts(torus), cc)).toEqual(predictSize(torus, cc));
+    // An open level goes through its arrays (facts that say otherwise are not read).
+    const grid = loadFixture('grid-open.off');
+    expect(predictSizeOfLevel(grid, { ...meshFacts(grid), vertices: 10 ** 6 }, cc)).toEqual(predictSize(grid, cc));
   });
 });
 

@@ -23,14 +23,10 @@ import {
 } from '../../web/core/rule-set';
 import { checkRules, meshFacts, predictSize, schemeNames, subdivide } from '../../web/core/subdiv-core';
 import { SubdivError } from '../../web/core/subdiv-error';
-import { FIXTURES_DIR, loadFixture } from './test-helpers';
+import { FIXTURES_DIR, loadFixture, rulePreset as preset } from './test-helpers';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const RULES_DIR = join(ROOT, 'public', 'rules');
-
-function preset(name: string): RuleSet {
-  return parseRuleSetText(readFileSync(join(RULES_DIR, `${name}.json`), 'utf8'));
-}
 
 /** Largest coordinate difference; same counts and faces required. */
 function expectSameMesh(a: Mesh, b: Mesh, tol: number): void {

@@ -4,9 +4,15 @@ import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect } from 'vitest';
 import type { Mesh, MeshFacts } from '../../web/core/mesh';
+import { parseRuleSetText, type RuleSet } from '../../web/core/rule-set';
 import { formatFromFileName, meshFacts, parseMesh } from '../../web/core/subdiv-core';
 
 export const FIXTURES_DIR = join(dirname(fileURLToPath(import.meta.url)), '..', 'fixtures');
+
+/** The rules panel's preset public/rules/NAME.json. */
+export function rulePreset(name: string): RuleSet {
+  return parseRuleSetText(readFileSync(join(FIXTURES_DIR, '..', '..', 'public', 'rules', `${name}.json`), 'utf8'));
+}
 
 /** Text of tests/fixtures/NAME. */
 export function fixtureText(name: string): string {

@@ -718,24 +718,53 @@ val js_inspect_mesh(const val& mesh, bool self_intersections, bool sphere,
   });
 }
 
+/// A prediction as web/core/mesh.ts's SizePrediction, or its error.
+val to_js_prediction(const Result<Size_prediction>& result,
+                     const Subdivide_options& options) {
+  if (!result.ok()) return to_js_status(result.status);
+  val prediction = val::object();
+  prediction.set("vertices", static_cast<double>(result.value.vertices));
+  prediction.set("edges", static_cast<double>(result.value.edges));
+  prediction.set("faces", static_cast<double>(result.value.faces));
+  prediction.set("peakBytes", static_cast<double>(result.value.peak_bytes));
+  prediction.set("memoryLimitBytes",
+                 static_cast<double>(options.memory_limit_bytes));
+  val out = ok_object();
+  out.set("prediction", prediction);
+  return out;
+}
+
 val js_predict_size(const val& mesh, const val& js_options) {
   return guarded([&] {
     const Mesh_buffers in = from_js_mesh(mesh);
     Subdivide_options options;
     const Status status = from_js_options(js_options, options);
     if (!status.ok()) return to_js_status(status);
-    const Result<Size_prediction> result = predict_size(in, options);
-    if (!result.ok()) return to_js_status(result.status);
-    val prediction = val::object();
-    prediction.set("vertices", static_cast<double>(result.value.vertices));
-    prediction.set("edges", static_cast<double>(result.value.edges));
-    prediction.set("faces", static_cast<double>(result.value.faces));
-    prediction.set("peakBytes", static_cast<double>(result.value.peak_bytes));
-    prediction.set("memoryLimitBytes",
-                   static_cast<double>(options.memory_limit_bytes));
-    val out = ok_object();
-    out.set("prediction", prediction);
-    return out;
+    return to_js_prediction(predict_size(in, options), options);
+  });
+}
+
+/// predict_size of a closed mesh without tags from its counts
+/// (web/core/subdiv-core.ts's predictSizeOfLevel).
+val js_predict_size_of_counts(const val& counts, const val& js_options) {
+  return guarded([&] {
+    Subdivide_options options;
+    const Status status = from_js_options(js_options, options);
+    if (!status.ok()) return to_js_status(status);
+    Closed_mesh_counts c;
+    for (auto [name, field] :
+         {std::pair{"vertices", &c.vertices}, std::pair{"edges", &c.edges},
+          std::pair{"faces", &c.faces}, std::pair{"triangles", &c.triangles},
+          std::pair{"controlEdges", &c.control_edges}}) {
+      const double x = counts[name].as<double>();
+      if (!(x >= 0 && x < 9007199254740992.0) || x != std::floor(x))
+        return to_js_status(
+            Status::error(Status_code::invalid_argument,
+                          std::string("counts: ") + name +
+                              " is not a count: " + std::to_string(x)));
+      *field = static_cast<std::uint64_t>(x);
+    }
+    return to_js_prediction(predict_size(c, options), options);
   });
 }
 
@@ -1025,6 +1054,8 @@ EMSCRIPTEN_BINDINGS(subdivlab) {
   emscripten::function("write_mesh", &subdivlab::js_write_mesh);
   emscripten::function("subdivide", &subdivlab::js_subdivide);
   emscripten::function("predict_size", &subdivlab::js_predict_size);
+  emscripten::function("predict_size_of_counts",
+                       &subdivlab::js_predict_size_of_counts);
   emscripten::function("step_stencils", &subdivlab::js_step_stencils);
   emscripten::function("compare_meshes", &subdivlab::js_compare_meshes);
   emscripten::function("hausdorff_distance", &subdivlab::js_hausdorff_distance);

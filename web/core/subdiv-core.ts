@@ -55,6 +55,7 @@ interface CoreModule {
   ): RawResult<object>;
   subdivide(mesh: Mesh, options: CoreOptions): RawResult<{ mesh: Mesh }>;
   predict_size(mesh: Mesh, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
+  predict_size_of_counts(counts: ClosedMeshCounts, options: CoreOptions): RawResult<{ prediction: SizePrediction }>;
   step_stencils(mesh: Mesh, options: CoreOptions): RawResult<StencilTable>;
   compare_meshes(reference: Mesh, result: Mesh, relativeTolerance: number): RawResult<MeshComparison>;
   inspect_mesh(
@@ -396,6 +397,35 @@ export function inspectMesh(mesh: Mesh, options: InspectOptions = {}): Inspectio
 /** Counts and peak heap bytes predicted for `subdivide(mesh, options)`, without subdividing. */
 export function predictSize(mesh: Mesh, options: SubdivideOptions): SizePrediction {
   return unwrap(module().predict_size(mesh, coreOptions(mesh, options))).prediction;
+}
+
+/** What the core's predict_size_of_counts reads (subdivide.h's Closed_mesh_counts). */
+interface ClosedMeshCounts {
+  vertices: number;
+  edges: number;
+  faces: number;
+  triangles: number;
+  controlEdges: number;
+}
+
+/**
+ * predictSize for a level that a step with the same options made, whose
+ * facts are `facts`: a closed level without tags is predicted from its
+ * counts, without copying its arrays into the core and checking them again
+ * (its run checked its parent); the same figures. Others go through
+ * predictSize, as does one the options would triangulate first.
+ */
+export function predictSizeOfLevel(mesh: Mesh, facts: MeshFacts, options: SubdivideOptions): SizePrediction {
+  const fromFaces = !facts.closed || mesh.tags !== undefined || (options.triangulate && facts.triangles < facts.faces);
+  if (fromFaces) return predictSize(mesh, options);
+  const counts: ClosedMeshCounts = {
+    vertices: facts.vertices,
+    edges: facts.edges,
+    faces: facts.faces,
+    triangles: facts.triangles,
+    controlEdges: facts.controlEdges,
+  };
+  return unwrap(module().predict_size_of_counts(counts, coreOptions(mesh, options))).prediction;
 }
 
 /** Vertices, edges, faces, components, boundaries, genus, face kinds, bounding box. */

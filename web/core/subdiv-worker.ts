@@ -22,6 +22,7 @@ import {
   parseForView,
   parseMesh,
   predictSize,
+  predictSizeOfLevel,
   schemeNames,
   sqrt3ByHand,
   stepStencils,
@@ -61,6 +62,8 @@ interface KeptLevel {
   facts: MeshFacts;
   /** Worked out once for level 0: every scheme keeps the way faces turn. */
   orientation: -1 | 0 | 1;
+  /** Made by a step here (its next step is predicted from its facts when it can be: predictSizeOfLevel). */
+  stepped?: boolean;
 }
 
 function keep(level: KeptLevel): LevelHandle {
@@ -165,7 +168,11 @@ const handlers: Handlers = {
     const parent = keptLevel(handle);
     const start = performance.now();
     const { mesh, facts, buffers } = subdivideForView(parent.mesh, options, parent.facts);
-    const level = levelData({ mesh, facts, orientation: parent.orientation }, buffers, performance.now() - start);
+    const level = levelData(
+      { mesh, facts, orientation: parent.orientation, stepped: true },
+      buffers,
+      performance.now() - start,
+    );
     return { value: level, transfer: buffersOf(level) };
   },
   async stencils({ handle, options }) {
@@ -206,7 +213,11 @@ const handlers: Handlers = {
   },
   async predict({ handle, options }) {
     await init();
-    return { value: predictSize(keptLevel(handle).mesh, options), transfer: [] };
+    const level = keptLevel(handle);
+    const prediction = level.stepped
+      ? predictSizeOfLevel(level.mesh, level.facts, options)
+      : predictSize(level.mesh, options);
+    return { value: prediction, transfer: [] };
   },
   async export({ handle, format, comment }) {
     await init();

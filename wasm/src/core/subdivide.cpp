@@ -618,6 +618,71 @@ Status run_step(Mesh& mesh, const Subdivide_options& options, int level_index) {
   return s;
 }
 
+namespace {
+
+/// predict_size once the mesh's counts `c` (creasing included) are known;
+/// `given_marks`: the control edges given with the mesh; `input`: the bytes
+/// of its buffers, which the run holds beside its steps.
+Result<Size_prediction> predict_counts(Counts c, double given_marks,
+                                       double input,
+                                       const Subdivide_options& options) {
+  Result<Size_prediction> result;
+  // Marks the primal schemes carry (before any triangulation).
+  double marks = 0;
+  if (scheme_keeps_control_edges(options))
+    marks = given_marks > 0              ? given_marks
+            : options.start_level == 0 ? c.edges
+                                       : 0;
+  if (needs_triangles(options) && c.non_triangles > 0) {
+    if (!options.triangulate) {
+      result.status = not_triangles(options.scheme, c);
+      return result;
+    }
+    c = triangulated(c);
+  }
+  Run_prediction run;
+  predict_run(options, c, input, marks, false, run);
+  c = run.after;
+  result.value.vertices = to_size(c.vertices);
+  result.value.edges = to_size(c.edges);
+  result.value.faces = to_size(c.faces);
+  result.value.peak_bytes = to_size(run.peak_bytes);
+  return result;
+}
+
+}  // namespace
+
+Result<Size_prediction> predict_size(const Closed_mesh_counts& mesh,
+                                     const Subdivide_options& options) {
+  Result<Size_prediction> result;
+  result.status = check_options(options);
+  if (!result.status.ok()) return result;
+  if (mesh.triangles > mesh.faces || mesh.faces == 0) {
+    result.status = Status::error(Status_code::invalid_argument,
+                                  "counts: more triangles than faces, or none");
+    return result;
+  }
+  Counts c;
+  c.vertices = static_cast<double>(mesh.vertices);
+  c.edges = static_cast<double>(mesh.edges);
+  c.faces = static_cast<double>(mesh.faces);
+  c.non_triangles = static_cast<double>(mesh.faces - mesh.triangles);
+  // Closed: every edge in two faces, so the degrees sum to 2E.
+  c.degree_excess = 2 * c.edges - 3 * c.faces;
+  if (needs_triangles(options) && options.triangulate && c.non_triangles > 0) {
+    result.status = Status::error(
+        Status_code::invalid_argument,
+        "a mesh to triangulate first is predicted from its faces");
+    return result;
+  }
+  // No tags: creasing only where the options ask for a border mode.
+  refine::Creasing creasing;
+  c.creased = creasing_of(Mesh_buffers{}, options, creasing);
+  return predict_counts(c, static_cast<double>(mesh.control_edges),
+                        buffers_bytes(c.vertices, c.faces, 2 * c.edges),
+                        options);
+}
+
 Result<Size_prediction> predict_size(const Mesh_buffers& in,
                                      const Subdivide_options& options) {
   Result<Size_prediction> result;
@@ -649,33 +714,14 @@ Result<Size_prediction> predict_size(const Mesh_buffers& in,
       }
       c = counts_of(level);
     }
-    // Marks the primal schemes carry (before any triangulation).
-    double marks = 0;
-    if (scheme_keeps_control_edges(options))
-      marks = !in.control_edges.empty()
-                  ? static_cast<double>(in.control_edges.size() / 2)
-              : options.start_level == 0 ? c.edges
-                                         : 0;
-    if (needs_triangles(options) && c.non_triangles > 0) {
-      if (!options.triangulate) {
-        result.status = not_triangles(options.scheme, c);
-        return result;
-      }
-      c = triangulated(c);
-    }
-    const double input =
-        buffers_bytes(static_cast<double>(in.vertex_count()),
-                      static_cast<double>(in.face_count()),
-                      static_cast<double>(in.face_indices.size()));
     refine::Creasing creasing;
     c.creased = creasing_of(in, options, creasing);
-    Run_prediction run;
-    predict_run(options, c, input, marks, false, run);
-    c = run.after;
-    result.value.vertices = to_size(c.vertices);
-    result.value.edges = to_size(c.edges);
-    result.value.faces = to_size(c.faces);
-    result.value.peak_bytes = to_size(run.peak_bytes);
+    result = predict_counts(
+        c, static_cast<double>(in.control_edges.size() / 2),
+        buffers_bytes(static_cast<double>(in.vertex_count()),
+                      static_cast<double>(in.face_count()),
+                      static_cast<double>(in.face_indices.size())),
+        options);
   } catch (const std::exception& e) {
     result.status = Status::error(Status_code::internal_error,
                                   std::string("internal error: ") + e.what());

@@ -59,6 +59,22 @@ struct Size_prediction {
 Result<Size_prediction> predict_size(const Mesh_buffers& mesh,
                                      const Subdivide_options& options);
 
+/// What predict_size needs of a closed mesh without tags, known only by its
+/// counts (a level the app keeps, with its facts).
+struct Closed_mesh_counts {
+  std::uint64_t vertices = 0, edges = 0, faces = 0;
+  std::uint64_t triangles = 0;      ///< faces of degree 3
+  std::uint64_t control_edges = 0;  ///< marked edges given with the mesh
+};
+
+/// predict_size of a closed mesh without tags from its counts, without its
+/// arrays: the same figures, for a mesh that a step with the same options
+/// made (so that the checks of its run passed). Fails as predict_size does
+/// (options, triangles); with `triangulate` on a mesh that needs it, which
+/// needs the faces, it fails with invalid_argument: ask predict_size.
+Result<Size_prediction> predict_size(const Closed_mesh_counts& mesh,
+                                     const Subdivide_options& options);
+
 /// Subdivides `mesh` `options.levels` times. Preconditions checked first:
 /// a valid mesh (build_mesh), a known scheme, levels >= 0, triangles for
 /// loop and sqrt3 unless options.triangulate, and the predicted size under
