@@ -630,7 +630,7 @@ Result<Size_prediction> predict_counts(Counts c, double given_marks,
   // Marks the primal schemes carry (before any triangulation).
   double marks = 0;
   if (scheme_keeps_control_edges(options))
-    marks = given_marks > 0              ? given_marks
+    marks = given_marks > 0            ? given_marks
             : options.start_level == 0 ? c.edges
                                        : 0;
   if (needs_triangles(options) && c.non_triangles > 0) {
