@@ -9,7 +9,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { SAMPLES } from '../../web/app/samples';
 import { initNode } from '../../web/core/init-node';
 import { formatFromFileName, meshFacts, parseMesh, subdivide } from '../../web/core/subdiv-core';
-import { growthText } from '../../web/ui/level-table';
+import { countText, growthText } from '../../web/ui/level-table';
 import { expectCounts, toPlain } from './test-helpers';
 
 beforeAll(async () => {
@@ -84,6 +84,20 @@ describe('the gallery samples', () => {
     const z = toPlain(mesh).points.map((p) => p[2]);
     expect(Math.min(...z)).toBe(-0.5);
     expect(Math.max(...z)).toBe(0.5);
+  });
+});
+
+describe('countText', () => {
+  it('keeps every digit below a million and gives millions from there', () => {
+    expect(countText(0)).toBe('0');
+    expect(countText(1920)).toBe('1,920');
+    expect(countText(999_999)).toBe('999,999');
+    expect(countText(1_000_000)).toBe('1 M');
+    expect(countText(4_268_544)).toBe('4.27 M');
+    expect(countText(17_074_176)).toBe('17.1 M');
+    expect(countText(34_148_352)).toBe('34.1 M');
+    expect(countText(273_186_816)).toBe('273.2 M');
+    expect(countText(1_092_747_264)).toBe('1,093 M');
   });
 });
 

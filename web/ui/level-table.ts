@@ -13,11 +13,24 @@ export function growthText(faces: number, previousFaces: number | undefined): st
   return `×${Number((faces / previousFaces).toFixed(2)).toLocaleString('en')}`;
 }
 
+/**
+ * A count as the table shows it: with thousands separators below a
+ * million ("999,999"), in millions from there ("4.27 M", "273.2 M"), where
+ * three columns of seven digits and more would push the growth factor out
+ * of the panel; the facts panel and the cell's tooltip keep every digit.
+ */
+export function countText(n: number): string {
+  if (n < 1e6) return n.toLocaleString('en');
+  return `${Number((n / 1e6).toPrecision(n < 1e8 ? 3 : 4)).toLocaleString('en')} M`;
+}
+
 const COLUMNS = ['Level', 'V', 'E', 'F', 'F growth'] as const;
 
 export class LevelTable {
   readonly element: HTMLElement;
   private readonly body: HTMLTableSectionElement;
+  /** Scrolls the table sideways when its numbers are wider than the panel (ten million faces and up). */
+  private readonly scroller: HTMLElement;
 
   constructor() {
     this.body = el('tbody');
@@ -29,8 +42,17 @@ export class LevelTable {
       el('thead', {}, head),
       this.body,
     );
+    this.scroller = el(
+      'div',
+      {
+        testId: 'levels.table-scroll',
+        className: 'level-table-scroll',
+        attrs: { role: 'group', 'aria-label': 'Counts per level' },
+      },
+      table,
+    );
     const summary = el('summary', { text: 'Counts per level' });
-    const details = el('details', { testId: 'levels.counts', className: 'level-counts' }, summary, table);
+    const details = el('details', { testId: 'levels.counts', className: 'level-counts' }, summary, this.scroller);
     details.open = true;
     this.element = details;
   }
@@ -38,14 +60,16 @@ export class LevelTable {
   update(state: ViewerState): void {
     this.element.hidden = state.levelCount === 0;
     const rows = state.levelFacts.map((f, k) => {
-      const cells = [
-        String(k),
-        f.vertices.toLocaleString('en'),
-        f.edges.toLocaleString('en'),
-        f.faces.toLocaleString('en'),
-        growthText(f.faces, state.levelFacts[k - 1]?.faces),
-      ];
-      const row = el('tr', { testId: `levels.row.${k}` }, ...cells.map((text) => el('td', { text })));
+      const counts = [f.vertices, f.edges, f.faces].map((n) =>
+        el('td', { text: countText(n), attrs: { title: n.toLocaleString('en') } }),
+      );
+      const row = el(
+        'tr',
+        { testId: `levels.row.${k}` },
+        el('td', { text: String(k) }),
+        ...counts,
+        el('td', { text: growthText(f.faces, state.levelFacts[k - 1]?.faces) }),
+      );
       if (k === state.level) {
         row.className = 'shown';
         row.setAttribute('aria-current', 'true');
@@ -53,5 +77,10 @@ export class LevelTable {
       return row;
     });
     this.body.replaceChildren(...rows);
+    // A keyboard reaches a region it has to scroll; one that fits is no stop on the way.
+    requestAnimationFrame(() => {
+      if (this.scroller.scrollWidth > this.scroller.clientWidth) this.scroller.tabIndex = 0;
+      else this.scroller.removeAttribute('tabindex');
+    });
   }
 }
