@@ -310,7 +310,9 @@ test('Cancel of a long step says which level was not computed and which is shown
   });
 });
 
-test('a large level in wireframe: its fat lines go to the GPU over several frames and are drawn', async ({ app }) => {
+test('a large level in wireframe: its fat lines go to the GPU over several frames and are drawn; a denser one as thin lines', async ({
+  app,
+}) => {
   test.setTimeout(120_000);
   await app.open();
   // 90 000 quads: level 1 has 720 000 edges, 17 MB of fat-line ends (over the 8 MB a frame uploads).
@@ -323,6 +325,20 @@ test('a large level in wireframe: its fat lines go to the GPU over several frame
   // The grid fills much of the view with edges (faded, but there).
   expect(dark).toBeGreaterThan((png.width * png.height) / 4 / 10);
   expect((await app.state()).edgeOpacity).toBeLessThan(0.5);
+  expect((await app.state()).thinEdges).toBe(false);
+  await test.step('level 2, past a million edges: one-pixel lines over the level’s own index, as dark', async () => {
+    await app.subdivide();
+    // 1,200 × 1,200 quads: 2 · 1,200 · 1,201 edges.
+    expect(await app.state()).toMatchObject({ level: 2, edgeSegments: 2_882_400, thinEdges: true });
+    const dense = readPng(await app.canvasPixels());
+    let shaded = 0;
+    for (let y = 0; y < dense.height; y += 2) {
+      for (let x = 0; x < dense.width; x += 2) if (darkness(dense, x, y) > 0.1) shaded++;
+    }
+    expect(shaded).toBeGreaterThan((dense.width * dense.height) / 4 / 10);
+    await app.byTestId('controls.render-mode').selectOption('smooth');
+    await expect.poll(async () => (await app.state()).thinEdges).toBe(false);
+  });
 });
 
 test('the iframe route takes lines=3 (the element’s line-width): lines three times as wide', async ({ app }) => {

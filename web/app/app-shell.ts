@@ -323,6 +323,7 @@ export class AppShell {
           aspect: this.viewer.view.camera.aspect,
           gpuGeometries: this.viewer.view.gpuMemory().geometries,
           edgeSegments: this.viewer.view.edgeSegments(),
+          thinEdges: this.viewer.view.thinEdges(),
           lineWidth: s.lineWidth,
           edgeOpacity: this.viewer.view.edgeOpacity(),
           savedViews: this.views.names,

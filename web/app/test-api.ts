@@ -42,6 +42,8 @@ export interface SubdivLabTestState {
   gpuGeometries: number;
   /** Segments of the polygon-edge lines of the shown level. */
   edgeSegments: number;
+  /** The polygon edges were last drawn as WebGL's one-pixel lines (a dense level), not fat lines. */
+  thinEdges: boolean;
   /** Rules the custom scheme steps with (the rules panel's last Apply, preset or file); null before any. */
   customRules: RuleSet | null;
   /** Rules the shown levels were computed with: customRules once its recomputation is done. */

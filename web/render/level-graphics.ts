@@ -12,6 +12,8 @@ import {
   DoubleSide,
   Float32BufferAttribute,
   FrontSide,
+  LineSegments,
+  Mesh,
   type Side,
   Sphere,
   Vector3,
@@ -90,6 +92,50 @@ function coloredPoints(positions: Float32Array, vertices: ArrayLike<number>, sha
     rgb.set([c.r, c.g, c.b], 3 * i);
   }
   return { xyz, rgb };
+}
+
+/**
+ * Draws `parts` (a level's geometry, maybe in parts) with `object`: the
+ * first part itself, the others as children sharing its material, made as
+ * needed and kept (hidden) for the next level; created in order, so three
+ * draws them in order (same material, same depth: by object id).
+ */
+export function showParts(object: Mesh | LineSegments, parts: readonly BufferGeometry[]): void {
+  object.geometry = parts[0];
+  for (let i = 1; i < parts.length; i++) {
+    let child = object.children[i - 1] as Mesh | LineSegments | undefined;
+    if (!child) {
+      child =
+        object instanceof Mesh ? new Mesh(parts[i], object.material) : new LineSegments(parts[i], object.material);
+      child.frustumCulled = false;
+      object.add(child);
+    }
+    child.geometry = parts[i];
+    child.visible = true;
+  }
+  for (const child of object.children.slice(parts.length - 1) as (Mesh | LineSegments)[]) {
+    child.visible = false;
+    // Lets a dropped level's arrays go.
+    child.geometry = NO_GEOMETRY;
+  }
+}
+
+/** What hidden parts hold (never drawn). */
+export const NO_GEOMETRY = new BufferGeometry();
+
+/**
+ * Segments above which a level's lines (its polygon edges, or the control
+ * mesh's) are drawn as WebGL's own one-pixel lines over the level's index
+ * (its edgeParts, sharing the surface's positions) instead of fat lines:
+ * there they are far less than a pixel apart, faded to a shade, and fat
+ * lines would copy every segment's ends on the main thread (hundreds of
+ * milliseconds) and send as many bytes again to the GPU.
+ */
+export const DENSE_LINE_SEGMENTS = 1_000_000;
+
+/** Whether `lines` (an indexed line geometry) has more than {@link DENSE_LINE_SEGMENTS} segments. */
+export function denseLines(lines: BufferGeometry): boolean {
+  return (lines.index?.count ?? 0) / 2 > DENSE_LINE_SEGMENTS;
 }
 
 export class LevelGraphics {

@@ -12,7 +12,6 @@ import {
   BufferGeometry,
   Color,
   Float32BufferAttribute,
-  LineSegments,
   Mesh,
   type Object3D,
   PerspectiveCamera,
@@ -29,7 +28,7 @@ import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
 import { orbitCamera, panCamera, zoomCamera } from './camera-moves';
 import { DEFAULT_VIEW_DIRECTION, fitCamera, fitDistance, freeRect, viewOffsetPixels } from './fit';
-import type { LevelGraphics } from './level-graphics';
+import { type LevelGraphics, showParts } from './level-graphics';
 import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
@@ -50,35 +49,6 @@ export interface ViewClick {
 
 /** A press and release this close (CSS pixels) is a click, not a drag of the camera. */
 const CLICK_SLOP = 4;
-
-/**
- * Draws `parts` (a level's geometry, maybe in parts) with `object`: the
- * first part itself, the others as children sharing its material, made as
- * needed and kept (hidden) for the next level; created in order, so three
- * draws them in order (same material, same depth: by object id).
- */
-function showParts(object: Mesh | LineSegments, parts: readonly BufferGeometry[]): void {
-  object.geometry = parts[0];
-  for (let i = 1; i < parts.length; i++) {
-    let child = object.children[i - 1] as Mesh | LineSegments | undefined;
-    if (!child) {
-      child =
-        object instanceof Mesh ? new Mesh(parts[i], object.material) : new LineSegments(parts[i], object.material);
-      child.frustumCulled = false;
-      object.add(child);
-    }
-    child.geometry = parts[i];
-    child.visible = true;
-  }
-  for (const child of object.children.slice(parts.length - 1) as (Mesh | LineSegments)[]) {
-    child.visible = false;
-    // Lets a dropped level's arrays go.
-    child.geometry = NO_GEOMETRY;
-  }
-}
-
-/** What hidden parts hold (never drawn). */
-const NO_GEOMETRY = new BufferGeometry();
 
 export class SceneView {
   readonly canvas: HTMLCanvasElement;
@@ -202,6 +172,8 @@ export class SceneView {
       this.lines.edges,
       this.lines.control,
       this.lines.curves,
+      this.lines.thinEdges,
+      this.lines.thinControl,
       this.creaseLines,
       this.borderLines,
       this.cornerPoints,
@@ -438,15 +410,16 @@ export class SceneView {
     return this.lines.width;
   }
 
-  /** The opacity the polygon edges are drawn with now (line-style.ts, edgeOpacity). */
-  edgeOpacity(): number {
+  /** The opacity the polygon edges (of `level`: the shown one, or the cage) are drawn with now (line-style.ts, edgeOpacity). */
+  edgeOpacity(level: LevelGraphics | null = this.shown): number {
     const distance = this.camera.position.distanceTo(this.controls.target);
-    return this.shown ? this.lines.edgeOpacity(this.shown, this.camera, distance, this.size.height) : 1;
+    return level ? this.lines.edgeOpacity(level, this.camera, distance, this.size.height) : 1;
   }
 
   /** Gives each fat line its width for a picture of `pixelsPerCss` device pixels a CSS pixel, and the edges their opacity. */
   private styleLines(pixelsPerCss: number): void {
-    this.lines.style(pixelsPerCss, this.shown, this.control, this.edgeOpacity(), [
+    const opacity = { edges: this.edgeOpacity(), control: this.edgeOpacity(this.control) };
+    this.lines.style(pixelsPerCss, this.shown, this.control, opacity, [
       [this.creaseLines, 'creases'],
       [this.parentLines, 'parents'],
       [this.borderLines, 'border'],
@@ -622,6 +595,11 @@ export class SceneView {
     this.dirty = true;
   }
 
+  /** Whether the last draw showed the polygon edges as WebGL's one-pixel lines (a dense level: view-lines.ts). */
+  thinEdges(): boolean {
+    return this.lines.thinEdges.visible;
+  }
+
   /** Line segments the edge overlay draws for the shown level (polygon edges, no fan diagonals). */
   edgeSegments(): number {
     return (this.shown?.edges.index?.count ?? 0) / 2;
@@ -640,7 +618,7 @@ export class SceneView {
     this.background = color;
     // Polygon edges stay visible on a dark background.
     const dark = color === null ? darkBehind : new Color(color).getHSL({ h: 0, s: 0, l: 0 }).l < 0.35;
-    this.lines.edges.material.color.set(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
+    this.lines.setEdgeColor(dark ? VIEW_COLORS.edgesOnDark : VIEW_COLORS.edges);
     this.dirty = true;
   }
 

@@ -2,13 +2,15 @@
  * A view's lines of the level: the polygon edges, the control mesh (cage)
  * and the marked control-edge curves, as three.js fat lines, with the
  * line-width setting and the edges' fading (line-style.ts). SceneView adds
- * the three objects to its scene and decides when each is visible.
+ * the objects to its scene and decides when the three line kinds are
+ * visible; polygon edges or a cage of more than DENSE_LINE_SEGMENTS segments
+ * are drawn by their thin counterparts instead (level-graphics.ts).
  */
-import type { BufferGeometry, PerspectiveCamera } from 'three';
+import { type BufferGeometry, LineBasicMaterial, LineSegments, type PerspectiveCamera } from 'three';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
-import type { LevelGraphics } from './level-graphics';
+import { denseLines, type LevelGraphics, NO_GEOMETRY, showParts } from './level-graphics';
 import {
   DEFAULT_LINE_WIDTH,
   edgeOpacity,
@@ -19,10 +21,20 @@ import {
   projectedLength,
 } from './line-style';
 
+/** What a fat line draws while its thin counterpart draws a dense level: nothing. */
+const EMPTY_FAT = new LineSegmentsGeometry();
+
 export class ViewLines {
   readonly edges: LineSegments2;
   readonly control: LineSegments2;
   readonly curves: LineSegments2;
+  /**
+   * The polygon edges and the cage of a dense level, one device pixel wide
+   * over the level's own index parts: visible, in place of the fat ones
+   * (then given no segments), when those are visible and dense.
+   */
+  readonly thinEdges: LineSegments<BufferGeometry, LineBasicMaterial>;
+  readonly thinControl: LineSegments<BufferGeometry, LineBasicMaterial>;
   /** The line-width setting, CSS pixels. */
   width = DEFAULT_LINE_WIDTH;
   /** Mean 3D length of each level's polygon edges, for the edges' fading. */
@@ -34,37 +46,55 @@ export class ViewLines {
       new LineSegmentsGeometry(),
       new LineMaterial({ color: colors.edges, transparent: true }),
     );
-    this.control = new LineSegments2(new LineSegmentsGeometry(), new LineMaterial({ color: colors.control }));
+    // Transparent as well: a cage of a scanned mesh crowds as a fine level does.
+    this.control = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({ color: colors.control, transparent: true }),
+    );
     this.control.renderOrder = 1;
     this.curves = new LineSegments2(new LineSegmentsGeometry(), new LineMaterial({ color: colors.curves }));
     this.curves.renderOrder = 2;
+    this.thinEdges = new LineSegments(NO_GEOMETRY, new LineBasicMaterial({ color: colors.edges, transparent: true }));
+    this.thinControl = new LineSegments(
+      NO_GEOMETRY,
+      new LineBasicMaterial({ color: colors.control, transparent: true }),
+    );
+    this.thinControl.renderOrder = 1;
+  }
+
+  /** The polygon edges' colour (darker or lighter with the background). */
+  setEdgeColor(color: string): void {
+    this.edges.material.color.set(color);
+    this.thinEdges.material.color.set(color);
   }
 
   /**
-   * The opacity of `shown`'s polygon edges seen by `camera` at `distance`
-   * from its target in a view `heightPx` CSS pixels tall: by their mean
-   * length on screen at the target's depth (line-style.ts, edgeOpacity).
+   * The opacity of `level`'s polygon edges (those of the shown level, or the
+   * cage's) seen by `camera` at `distance` from its target in a view
+   * `heightPx` CSS pixels tall: by their mean length on screen at the
+   * target's depth (line-style.ts, edgeOpacity).
    */
-  edgeOpacity(shown: LevelGraphics, camera: PerspectiveCamera, distance: number, heightPx: number): number {
-    let mean = this.meanEdge.get(shown);
+  edgeOpacity(level: LevelGraphics, camera: PerspectiveCamera, distance: number, heightPx: number): number {
+    let mean = this.meanEdge.get(level);
     if (mean === undefined) {
-      mean = meanSegmentLength(shown.surface.getAttribute('position').array, shown.edges.index?.array ?? []);
-      this.meanEdge.set(shown, mean);
+      mean = meanSegmentLength(level.surface.getAttribute('position').array, level.edges.index?.array ?? []);
+      this.meanEdge.set(level, mean);
     }
     return edgeOpacity(projectedLength(mean, distance, camera, heightPx), this.width);
   }
 
   /**
    * Gives these lines and `others` their widths for a picture of
-   * `pixelsPerCss` device pixels a CSS pixel, the edges `opacity`, and the
-   * visible ones the fat lines of `shown` and `control` (made when first
-   * drawn, refilled when Split moves the points).
+   * `pixelsPerCss` device pixels a CSS pixel, the edges and the cage their
+   * `opacity`, and the visible ones the fat lines of `shown` and `control`
+   * (made when first drawn, refilled when Split moves the points) or, dense,
+   * their thin lines.
    */
   style(
     pixelsPerCss: number,
     shown: LevelGraphics | null,
     control: LevelGraphics | null,
-    opacity: number,
+    opacity: { edges: number; control: number },
     others: readonly [LineSegments2, LineKind][],
   ): void {
     const widths: [LineSegments2, LineKind][] = [
@@ -74,20 +104,32 @@ export class ViewLines {
       ...others,
     ];
     for (const [line, kind] of widths) line.material.linewidth = lineWidthPx(kind, this.width, pixelsPerCss);
-    this.edges.material.opacity = opacity;
-    if (this.edges.visible && shown) this.edges.geometry = fatLinesOf(shown.edges);
-    if (this.control.visible && control) this.control.geometry = fatLinesOf(control.edges);
+    this.edges.material.opacity = opacity.edges;
+    this.thinEdges.material.opacity = opacity.edges;
+    this.control.material.opacity = opacity.control;
+    this.thinControl.material.opacity = opacity.control;
+    for (const [fat, thin, level] of [
+      [this.edges, this.thinEdges, shown],
+      [this.control, this.thinControl, control],
+    ] as const) {
+      const dense = fat.visible && level !== null && denseLines(level.edges);
+      thin.visible = dense;
+      // Not dense: the thin lines let go of the level they drew.
+      showParts(thin, dense ? level.edgeParts : [NO_GEOMETRY]);
+      if (dense) fat.geometry = EMPTY_FAT;
+      else if (fat.visible && level) fat.geometry = fatLinesOf(level.edges);
+    }
     if (this.curves.visible && shown?.curves) this.curves.geometry = fatLinesOf(shown.curves);
   }
 
-  /** The fat-line geometries the next draw needs (of the visible lines). */
+  /** The line geometries the next draw needs (of the visible lines): fat lines, or a dense level's index parts. */
   geometries(shown: LevelGraphics | null, control: LevelGraphics | null): BufferGeometry[] {
-    const lines = [
-      this.edges.visible && shown ? fatLinesOf(shown.edges) : null,
-      this.control.visible && control ? fatLinesOf(control.edges) : null,
-      this.curves.visible && shown?.curves ? fatLinesOf(shown.curves) : null,
+    const of = (level: LevelGraphics) => (denseLines(level.edges) ? level.edgeParts : [fatLinesOf(level.edges)]);
+    return [
+      ...(this.edges.visible && shown ? of(shown) : []),
+      ...(this.control.visible && control ? of(control) : []),
+      ...(this.curves.visible && shown?.curves ? [fatLinesOf(shown.curves)] : []),
     ];
-    return lines.filter((g) => g !== null);
   }
 
   /** Frees the materials (the fat geometries go with their levels). */
@@ -95,5 +137,7 @@ export class ViewLines {
     this.edges.material.dispose();
     this.control.material.dispose();
     this.curves.material.dispose();
+    this.thinEdges.material.dispose();
+    this.thinControl.material.dispose();
   }
 }
