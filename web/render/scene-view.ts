@@ -416,7 +416,7 @@ export class SceneView {
     return level ? this.lines.edgeOpacity(level, this.camera, distance, this.size.height) : 1;
   }
 
-  /** Gives each fat line its width for a picture of `pixelsPerCss` device pixels a CSS pixel, and the edges their opacity. */
+  /** Gives each fat line its width for a picture of `pixelsPerCss` device pixels a CSS pixel, and the edges and the cage their opacity. */
   private styleLines(pixelsPerCss: number): void {
     const opacity = { edges: this.edgeOpacity(), control: this.edgeOpacity(this.control) };
     this.lines.style(pixelsPerCss, this.shown, this.control, opacity, [
