@@ -523,13 +523,24 @@ test.describe('what pages do to an element', () => {
       const result = await page.locator('#big').evaluate(async (e) => {
         const v = e as HTMLElementTagNameMap['subdiv-viewer'];
         const started = performance.now();
+        // Back to 0 as soon as the first step is under way (a fixed wait lost the race on a fast machine).
+        const stepping = new Promise<string>((resolve) => {
+          const onProgress = (event: Event) => {
+            const detail = (event as CustomEvent<{ busy: boolean; kind: string | null; label: string }>).detail;
+            if (!detail.busy || detail.kind !== 'subdivide') return;
+            v.removeEventListener('progress', onProgress);
+            resolve(detail.label);
+          };
+          v.addEventListener('progress', onProgress);
+        });
         const done = v.setLevel(2);
-        await new Promise((r) => setTimeout(r, 50));
+        const label = await stepping;
         v.levels = 0;
         const level = await done;
-        return { level, ms: performance.now() - started };
+        return { level, label, ms: performance.now() - started };
       });
       expect(result.level).toBe(0);
+      expect(result.label).toMatch(/level 1/);
       const levels = (await embed.events('level-change', 'big')).map((e) => e.detail.level);
       expect(levels).toEqual([0]);
       expect(await embed.events('error', 'big')).toEqual([]);
