@@ -15,7 +15,7 @@
  * each SVG polygon both rasters show its fill within 2 levels.
  */
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -193,6 +193,36 @@ describe('subdiv figure', () => {
     expect(segments('creases-')).toBe(tags?.creaseSharpness.length);
     expect(segments('control-curves')).toBe(level.controlEdges.length / 2);
     expect((svg.match(/<circle /g) ?? []).length).toBe(tags?.cornerSharpness.length);
+  });
+
+  it('a dense cage fades as the app draws it, by its own edges; the cube’s stays solid', () => {
+    // A 60 × 60 quad grid: its cage's edges are a few pixels long in 800 × 600.
+    const n = 60;
+    const vertices: string[] = [];
+    const faces: string[] = [];
+    for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) vertices.push(`${i / n} ${j / n} 0`);
+    for (let j = 0; j < n; j++) {
+      for (let i = 0; i < n; i++) {
+        const a = j * (n + 1) + i;
+        faces.push(`4 ${a} ${a + 1} ${a + n + 2} ${a + n + 1}`);
+      }
+    }
+    const grid = join(work, 'grid60.off');
+    writeFileSync(grid, `OFF\n${vertices.length} ${faces.length} 0\n${vertices.join('\n')}\n${faces.join('\n')}\n`);
+    const r = subdiv(['figure', grid, '--levels', '1', '--control-mesh', '-o', join(work, 'grid.svg')]);
+    expect(r.status).toBe(0);
+    const svg = readFileSync(join(work, 'grid.svg'), 'utf8');
+    const cageOpacity = (text: string) =>
+      Number(/<path id="control-mesh" [^>]*?stroke-opacity="([\d.]+)"/.exec(text)?.[1] ?? 1);
+    const edges = Number(/<g id="faces" [^>]*stroke-opacity="([\d.]+)"/.exec(svg)?.[1]);
+    // The cage's edges are twice its level's: fainter than solid, less faint than the level's.
+    expect(cageOpacity(svg)).toBeLessThan(0.9);
+    expect(cageOpacity(svg)).toBeGreaterThan(edges);
+    expect(cageOpacity(svg)).toBeCloseTo(Math.min(1, edges * Math.SQRT2), 1);
+    figure('cube-cage.svg', ['--control-mesh']);
+    expect(readFileSync(join(work, 'cube-cage.svg'), 'utf8')).toMatch(
+      /<path id="control-mesh" (?![^>]*stroke-opacity)/,
+    );
   });
 
   it('bad usage: unknown view or mode, another extension, no -o: exit 2 with the reason', () => {

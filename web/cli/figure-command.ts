@@ -74,10 +74,12 @@ export function renderFigure(
     : null;
   const camera = placeCamera(options, width / height, [buffers.positions, ...(controlLines ? [cage.positions] : [])]);
   const distance = camera.position.distanceTo(camera.userData.target as Vector3);
-  const opacity = edgeOpacity(
-    projectedLength(meanSegmentLength(buffers.positions, buffers.edges), distance, camera, height),
-    options.lineWidth,
-  );
+  const opacityOf = (lines: { positions: Float32Array; edges: Uint32Array }) =>
+    edgeOpacity(
+      projectedLength(meanSegmentLength(lines.positions, lines.edges), distance, camera, height),
+      options.lineWidth,
+    );
+  const opacity = opacityOf(buffers);
   const { controlEdges, tags } = level.mesh;
   const figure = buildFigure({
     mesh,
@@ -91,6 +93,7 @@ export function renderFigure(
     background: !options.transparent,
     lineWidth: options.lineWidth,
     edgeOpacity: opacity,
+    controlOpacity: controlLines ? opacityOf(cage) : 1,
     style: figureStyle(options.mode),
   });
   const view: ViewState = {

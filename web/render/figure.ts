@@ -64,6 +64,8 @@ export interface FigureInput {
   lineWidth?: number;
   /** The polygon edges' opacity as the view draws them (line-style.ts, edgeOpacity), default 1. */
   edgeOpacity?: number;
+  /** The control mesh's opacity, by the same rule from its own edges, default 1. */
+  controlOpacity?: number;
   /** Default 'edges'. */
   style?: FigureStyle;
 }
@@ -120,10 +122,22 @@ export function buildFigure(input: FigureInput): Figure {
   const edgeStroke = { color: VIEW_COLORS.edges, width: w('edges'), opacity: input.edgeOpacity ?? 1 };
 
   const overlays = [
-    { lines: input.curves, id: 'control-curves', color: VIEW_COLORS.curves, width: w('curves') },
-    { lines: input.control, id: 'control-mesh', color: VIEW_COLORS.control, width: w('control') },
-    ...(input.creases ?? []).map(({ lines, color }, i) => ({ lines, id: `creases-${i}`, color, width: w('creases') })),
-  ].flatMap(({ lines, id, color, width }) => (lines ? [{ ...splitByFacing(lines, camera), id, color, width }] : []));
+    { lines: input.curves, id: 'control-curves', color: VIEW_COLORS.curves, width: w('curves'), opacity: 1 },
+    {
+      lines: input.control,
+      id: 'control-mesh',
+      color: VIEW_COLORS.control,
+      width: w('control'),
+      opacity: input.controlOpacity ?? 1,
+    },
+    ...(input.creases ?? []).map(({ lines, color }, i) => ({
+      lines,
+      id: `creases-${i}`,
+      color,
+      width: w('creases'),
+      opacity: 1,
+    })),
+  ].flatMap(({ lines, ...o }) => (lines ? [{ ...splitByFacing(lines, camera), ...o }] : []));
   const dots = (input.corners ?? []).map(({ points, color }, i) => ({
     ...splitPointsByFacing(points, camera),
     id: `corners-${i}`,
@@ -145,7 +159,7 @@ export function buildFigure(input: FigureInput): Figure {
 
   const layers: FigureLayer[] = [];
   // Lines behind the surface first (ids ending in -back), the faces over them, then the lines in front.
-  for (const o of overlays) layers.push(lineLayer(o.back, `${o.id}-back`, o.color, o.width));
+  for (const o of overlays) layers.push(lineLayer(o.back, `${o.id}-back`, o.color, o.width, o.opacity));
   for (const o of dots) layers.push(dotLayer(o.back, `${o.id}-back`, o.color));
   if (style === 'wireframe') {
     const edges = { positions: input.mesh.positions, edges: polygonEdges(input.mesh) };
@@ -154,7 +168,7 @@ export function buildFigure(input: FigureInput): Figure {
     const polygons = facingPolygons(input.mesh, camera, project);
     layers.push({ kind: 'polygons', id: 'faces', polygons, stroke: style === 'edges' ? edgeStroke : null });
   }
-  for (const o of overlays) layers.push(lineLayer(o.front, o.id, o.color, o.width));
+  for (const o of overlays) layers.push(lineLayer(o.front, o.id, o.color, o.width, o.opacity));
   for (const o of dots) layers.push(dotLayer(o.front, o.id, o.color));
   return { width, height, background: input.background ? VIEW_COLORS.background : null, layers };
 }

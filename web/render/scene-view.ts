@@ -416,9 +416,14 @@ export class SceneView {
     return level ? this.lines.edgeOpacity(level, this.camera, distance, this.size.height) : 1;
   }
 
+  /** The opacity the control mesh is drawn with now: its own edges' (1 without a control mesh). */
+  cageOpacity(): number {
+    return this.edgeOpacity(this.control);
+  }
+
   /** Gives each fat line its width for a picture of `pixelsPerCss` device pixels a CSS pixel, and the edges and the cage their opacity. */
   private styleLines(pixelsPerCss: number): void {
-    const opacity = { edges: this.edgeOpacity(), control: this.edgeOpacity(this.control) };
+    const opacity = { edges: this.edgeOpacity(), control: this.cageOpacity() };
     this.lines.style(pixelsPerCss, this.shown, this.control, opacity, [
       [this.creaseLines, 'creases'],
       [this.parentLines, 'parents'],

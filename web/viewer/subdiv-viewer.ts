@@ -635,6 +635,7 @@ export class SubdivViewer {
       background: !transparent,
       lineWidth: this.view.lineWidthSetting,
       edgeOpacity: this.view.edgeOpacity(),
+      controlOpacity: this.view.cageOpacity(),
     });
   }
 
