@@ -440,9 +440,13 @@ TEST(SubdivideCounts, CountsOfQuadsRefuseTrianglesAsTheArraysDo) {
       predict_size(counts, options_for("loop", 1, 0, true));
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.status.code, Status_code::invalid_argument);
+  EXPECT_EQ(c.status.message,
+            "a mesh to triangulate first is predicted from its faces");
   counts.triangles = 7;
-  EXPECT_EQ(predict_size(counts, options_for("catmull-clark", 1)).status.code,
-            Status_code::invalid_argument);
+  const Result<Size_prediction> d =
+      predict_size(counts, options_for("catmull-clark", 1));
+  EXPECT_EQ(d.status.code, Status_code::invalid_argument);
+  EXPECT_EQ(d.status.message, "counts: more triangles than faces, or none");
   // With the counts right, the cube's Catmull-Clark step: 26, 48, 24.
   counts.triangles = 0;
   const Result<Size_prediction> cc =
