@@ -88,14 +88,37 @@ describe('ViewLines', () => {
     expect(lines.edges.geometry.getAttribute('instanceStart').count).toBe(31);
   });
 
+  it('dense control-edge curves are thin lines over their own index', () => {
+    const n = Math.ceil(DENSE_LINE_SEGMENTS / 3) + 1;
+    const buffers = quadStrip(n);
+    // Every edge marked: as many curve segments as edges.
+    const dense = new LevelGraphics(buffers, buffers.edges.slice());
+    const lines = new ViewLines(COLORS);
+    lines.edges.visible = false;
+    lines.control.visible = false;
+    lines.curves.visible = true;
+    lines.style(1, dense, null, opacity, []);
+    expect(lines.thinCurves.visible).toBe(true);
+    expect(lines.thinCurves.geometry).toBe(dense.curves);
+    expect(lines.curves.geometry.getAttribute('instanceStart')).toBeUndefined();
+    expect(lines.geometries(dense, null)).toEqual([dense.curves]);
+    // A few marked edges stay fat.
+    const sparse = new LevelGraphics(buffers, buffers.edges.slice(0, 20));
+    lines.style(1, sparse, null, opacity, []);
+    expect(lines.thinCurves.visible).toBe(false);
+    expect(lines.curves.geometry.getAttribute('instanceStart').count).toBe(10);
+  });
+
   it('hidden lines draw nothing, dense or not', () => {
     const dense = new LevelGraphics(quadStrip(Math.ceil(DENSE_LINE_SEGMENTS / 3) + 1));
     const lines = new ViewLines(COLORS);
     lines.edges.visible = false;
     lines.control.visible = false;
+    lines.curves.visible = false;
     lines.style(1, dense, dense, opacity, []);
     expect(lines.thinEdges.visible).toBe(false);
     expect(lines.thinControl.visible).toBe(false);
+    expect(lines.thinCurves.visible).toBe(false);
     expect(lines.geometries(dense, dense)).toEqual([]);
   });
 });

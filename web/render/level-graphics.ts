@@ -124,12 +124,13 @@ export function showParts(object: Mesh | LineSegments, parts: readonly BufferGeo
 export const NO_GEOMETRY = new BufferGeometry();
 
 /**
- * Segments above which a level's lines (its polygon edges, or the control
- * mesh's) are drawn as WebGL's own one-pixel lines over the level's index
- * (its edgeParts, sharing the surface's positions) instead of fat lines:
- * there they are far less than a pixel apart, faded to a shade, and fat
- * lines would copy every segment's ends on the main thread (hundreds of
- * milliseconds) and send as many bytes again to the GPU.
+ * Segments above which a level's lines (its polygon edges, the control
+ * mesh's, its control-edge curves) are drawn as WebGL's own one-pixel
+ * lines over the level's own index (edgeParts, or the curves' index),
+ * sharing the surface's positions, instead of fat lines: there they are far
+ * less than a pixel apart, faded to a shade, and fat lines would copy every
+ * segment's ends on the main thread (hundreds of milliseconds) and send as
+ * many bytes again to the GPU.
  */
 export const DENSE_LINE_SEGMENTS = 1_000_000;
 

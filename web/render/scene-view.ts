@@ -174,6 +174,7 @@ export class SceneView {
       this.lines.curves,
       this.lines.thinEdges,
       this.lines.thinControl,
+      this.lines.thinCurves,
       this.creaseLines,
       this.borderLines,
       this.cornerPoints,

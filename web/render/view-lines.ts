@@ -3,8 +3,8 @@
  * and the marked control-edge curves, as three.js fat lines, with the
  * line-width setting and the edges' fading (line-style.ts). SceneView adds
  * the objects to its scene and decides when the three line kinds are
- * visible; polygon edges or a cage of more than DENSE_LINE_SEGMENTS segments
- * are drawn by their thin counterparts instead (level-graphics.ts).
+ * visible; polygon edges, a cage or curves of more than DENSE_LINE_SEGMENTS
+ * segments are drawn by their thin counterparts instead (level-graphics.ts).
  */
 import { type BufferGeometry, LineBasicMaterial, LineSegments, type PerspectiveCamera } from 'three';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
@@ -35,6 +35,8 @@ export class ViewLines {
    */
   readonly thinEdges: LineSegments<BufferGeometry, LineBasicMaterial>;
   readonly thinControl: LineSegments<BufferGeometry, LineBasicMaterial>;
+  /** The control-edge curves of a dense level, likewise. */
+  readonly thinCurves: LineSegments<BufferGeometry, LineBasicMaterial>;
   /** The line-width setting, CSS pixels. */
   width = DEFAULT_LINE_WIDTH;
   /** Mean 3D length of each level's polygon edges, for the edges' fading. */
@@ -60,6 +62,8 @@ export class ViewLines {
       new LineBasicMaterial({ color: colors.control, transparent: true }),
     );
     this.thinControl.renderOrder = 1;
+    this.thinCurves = new LineSegments(NO_GEOMETRY, new LineBasicMaterial({ color: colors.curves }));
+    this.thinCurves.renderOrder = 2;
   }
 
   /** The polygon edges' colour (darker or lighter with the background). */
@@ -108,27 +112,38 @@ export class ViewLines {
     this.thinEdges.material.opacity = opacity.edges;
     this.control.material.opacity = opacity.control;
     this.thinControl.material.opacity = opacity.control;
-    for (const [fat, thin, level] of [
-      [this.edges, this.thinEdges, shown],
-      [this.control, this.thinControl, control],
-    ] as const) {
-      const dense = fat.visible && level !== null && denseLines(level.edges);
+    for (const { fat, thin, lines, parts } of this.kinds(shown, control)) {
+      const dense = fat.visible && lines !== null && denseLines(lines);
       thin.visible = dense;
       // Not dense: the thin lines let go of the level they drew.
-      showParts(thin, dense ? level.edgeParts : [NO_GEOMETRY]);
+      showParts(thin, dense ? parts : [NO_GEOMETRY]);
       if (dense) fat.geometry = EMPTY_FAT;
-      else if (fat.visible && level) fat.geometry = fatLinesOf(level.edges);
+      else if (fat.visible && lines) fat.geometry = fatLinesOf(lines);
     }
-    if (this.curves.visible && shown?.curves) this.curves.geometry = fatLinesOf(shown.curves);
   }
 
   /** The line geometries the next draw needs (of the visible lines): fat lines, or a dense level's index parts. */
   geometries(shown: LevelGraphics | null, control: LevelGraphics | null): BufferGeometry[] {
-    const of = (level: LevelGraphics) => (denseLines(level.edges) ? level.edgeParts : [fatLinesOf(level.edges)]);
+    return this.kinds(shown, control).flatMap(({ fat, lines, parts }) =>
+      !fat.visible || !lines ? [] : denseLines(lines) ? parts : [fatLinesOf(lines)],
+    );
+  }
+
+  /**
+   * Each kind of line with what it draws: the shown level's polygon edges,
+   * the cage's, and the shown level's marked control edges (their index
+   * whole: a level marks at most as many edges as it has).
+   */
+  private kinds(shown: LevelGraphics | null, control: LevelGraphics | null) {
     return [
-      ...(this.edges.visible && shown ? of(shown) : []),
-      ...(this.control.visible && control ? of(control) : []),
-      ...(this.curves.visible && shown?.curves ? [fatLinesOf(shown.curves)] : []),
+      { fat: this.edges, thin: this.thinEdges, lines: shown?.edges ?? null, parts: shown?.edgeParts ?? [] },
+      { fat: this.control, thin: this.thinControl, lines: control?.edges ?? null, parts: control?.edgeParts ?? [] },
+      {
+        fat: this.curves,
+        thin: this.thinCurves,
+        lines: shown?.curves ?? null,
+        parts: shown?.curves ? [shown.curves] : [],
+      },
     ];
   }
 
@@ -139,5 +154,6 @@ export class ViewLines {
     this.curves.material.dispose();
     this.thinEdges.material.dispose();
     this.thinControl.material.dispose();
+    this.thinCurves.material.dispose();
   }
 }
