@@ -32,7 +32,7 @@ const CHROMIUM = '/usr/bin/chromium';
 const ROWS = [
   { scheme: 'loop', levels: 2, mesh: 'bunny00' },
   { scheme: 'catmull-clark', levels: 2, mesh: 'bunny00' },
-  { scheme: 'catmull-clark', levels: 4, mesh: 'refined_elephant', once: true },
+  { scheme: 'catmull-clark', levels: 4, mesh: 'refined_elephant', runs: 1, confirm: true },
 ];
 /** Where the site serves a mesh: bunny00 is a sample; others are copied into dist/meshes/bench/. */
 const siteMesh = (name) => (name === 'bunny00' ? 'meshes/cgal/bunny00.off' : `meshes/bench/${name}.off`);
@@ -179,7 +179,7 @@ async function timeStep(browser, url, row, run, traceDir) {
       row.levels,
     );
     await page.getByTestId('controls.subdivide').click();
-    if (row.once) {
+    if (row.confirm) {
       // The step is past the memory budget: the app asks, the bench says yes.
       await page.getByTestId('confirm.ok').click({ timeout: 60_000 });
     }
@@ -237,7 +237,7 @@ export async function benchApp(runs = 3, meshes = {}) {
   const rows = [];
   try {
     for (const row of rowsToRun) {
-      const times = row.once ? 1 : runs;
+      const times = row.runs ?? runs;
       console.log(
         `[bench] app: ${row.scheme}, ${row.mesh} x${row.levels} in Chromium (${server.url}), ${times} run(s)`,
       );
