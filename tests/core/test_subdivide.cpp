@@ -1038,9 +1038,27 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
     Mesh_buffers in;
     int start_level;
     int levels = 1;
+    bool triangulate = false;
+  };
+  // Control edges given as pairs (every face's first edge): found through
+  // the halfedges around each vertex, held as pairs until marked.
+  const auto with_control_edges = [](Mesh_buffers m) {
+    std::size_t o = 0;
+    for (std::uint32_t f = 0; f < m.face_count(); ++f) {
+      m.control_edges.insert(m.control_edges.end(),
+                             {m.face_indices[o], m.face_indices[o + 1]});
+      o += m.face_sizes[f];
+    }
+    return m;
   };
   std::vector<Probe> probes = {
       {"catmull-clark", "quad torus 160x80", torus(160, 80, false), 0},
+      {"catmull-clark", "quad torus 160x80, pairs",
+       with_control_edges(torus(160, 80, false)), 0},
+      {"loop", "tri torus 160x80, pairs",
+       with_control_edges(torus(160, 80, true)), 0},
+      {"loop", "quad torus 120x60, triangulated", torus(120, 60, false), 0, 1,
+       true},
       {"catmull-clark", "quad grid 120x100", grid(120, 100, false), 0},
       {"catmull-clark", "tri torus 120x60", torus(120, 60, true), 0},
       {"loop", "tri torus 160x80", torus(160, 80, true), 0},
@@ -1125,6 +1143,7 @@ TEST(SubdivideMemory, ModelBoundsTheMeasuredPeakOfEveryStep) {
                     0, 3});
   for (const Probe& p : probes) {
     Subdivide_options o = options_for(p.scheme, p.levels, p.start_level);
+    o.triangulate = p.triangulate;
     const Result<Size_prediction> predicted = predict_size(p.in, o);
     ASSERT_TRUE(predicted.ok());
     // The input buffers count: they live through the call.

@@ -56,6 +56,7 @@ Counts triangulated(Counts c) {
   c.faces += c.degree_excess;
   c.non_triangles = 0;
   c.degree_excess = 0;
+  c.from_triangulated_mesh = true;
   return c;  // border degrees and multi-border faces: not needed by loop/sqrt3
 }
 
@@ -316,7 +317,8 @@ double to_buffers_peak(const Counts& n, const Caps& caps, double base) {
 }
 
 /// Peak of a step on the fast primal hosts (refine/): the parent and
-/// child levels' tables and the step's per-vertex scratch; on the first step
+/// child levels' tables and the step's per-vertex scratch (the last step
+/// of a primal run frees some before its child's corners); on the first step
 /// the Surface_mesh the level came from (freed before the step); after the
 /// last, the child level with the output's face sizes (positions, face
 /// vertices and control edges move out). The child of the last step has
@@ -368,6 +370,18 @@ double fast_step_peak(const std::string& scheme, bool face_sums,
                (last ? 8 * n.edges : 0);
   }
   double peak = base + parent - freed + child + scratch;
+  if (last && !c.creased && !dual && scheme != "sqrt3") {
+    // The last step of a PQQ, PTQ or PQT run (release_before_last_topology):
+    // its points beside the parent and the scratch; then, the scratch and
+    // the parent's positions and halfedge corners freed, the marked edges'
+    // ends beside its halfedge targets; then, those and its marks freed,
+    // the child's corners.
+    const double points = 24 * n.vertices, ends = 16 * marks;
+    const double kept = parent - 24 * c.vertices - 8 * c.edges;
+    peak =
+        base + std::max({parent + points + scratch, kept + points + ends,
+                         kept - 8 * c.edges - (marked ? c.edges : 0) + child});
+  }
   // Level 0 comes from the buffers (check_buffers' temporaries: 32 bytes
   // a corner, 8 a vertex, 4 a face; then the level beside the corners'
   // halfedges and a vertex numbering) or, when it had to be triangulated,
@@ -377,12 +391,15 @@ double fast_step_peak(const std::string& scheme, bool face_sums,
   // come after the last step.
   if (first) {
     const double S = c.degree_sum(), V = c.vertices;
-    const double from_buffers =
+    double level0 =
         std::max(32 * S + 8 * V + 4 * c.faces, 4 * S + 4 * V + parent);
-    const double from_mesh = caps_bytes(caps) + parent;
-    const double finding = marks > 0 ? 8 * V + 8 * c.edges : 0;
-    peak = std::max(peak, base + std::max(from_buffers, from_mesh) + finding +
-                              control_edge_bytes(marks));
+    if (c.from_triangulated_mesh)
+      level0 = std::max(level0, caps_bytes(caps) + parent);
+    const double finding =
+        marks > 0 && (c.control_edge_pairs || c.from_triangulated_mesh)
+            ? 8 * V + 8 * c.edges + control_edge_bytes(marks)
+            : 0;
+    peak = std::max(peak, base + level0 + finding);
   }
   if (last) peak = std::max(peak, base + child + 4 * n.faces);
   return peak;

@@ -27,6 +27,12 @@ struct Counts {
   /// The run applies OpenSubdiv's creasing (refine/crease.h): its levels
   /// carry crease tables.
   bool creased = false;
+  /// How a fast run's level 0 is made (its first step's peak): from the
+  /// mesh CGAL triangulated, else from the buffers; with control edges
+  /// given as pairs (found through each vertex's halfedges, and held as
+  /// pairs), else every edge marked.
+  bool from_triangulated_mesh = false;
+  bool control_edge_pairs = false;
 
   double degree_sum() const { return 2 * edges - border_edges; }
 };

@@ -338,6 +338,7 @@ Status prepare_level(const Mesh_buffers& in, const Subdivide_options& options,
     s = prepare(in, options, mesh, counts);
     if (!s.ok()) return s;
     level = refine::level_from_mesh(mesh);
+    counts.from_triangulated_mesh = true;
     all_edges_are_face_edges = false;
   } else {
     s = check_two_valent_vertices(level, options);
@@ -345,6 +346,7 @@ Status prepare_level(const Mesh_buffers& in, const Subdivide_options& options,
   }
   marks = 0;
   if (!scheme_keeps_control_edges(options)) return Status::success();
+  counts.control_edge_pairs = !in.control_edges.empty();
   if (in.control_edges.empty() && all_edges_are_face_edges) {
     if (options.start_level == 0) level.edge_marks.assign(level.edge_count, 1);
     marks = options.start_level == 0 ? level.edge_count : 0;
@@ -427,20 +429,41 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
             refine::primal_uncovered_valence(p, mask, scratch);
         if (uncovered != 0)
           return custom_rules_valence_refusal(options.custom, uncovered);
-        if (mask.pqq)
-          refine::refine_pqq_topology(p, c, last);
-        else
-          refine::refine_ptq_topology(p, c, last);
-        if (p.creased) refine::refine_crease_tables(p, creasing, mask.pqq, c);
         const auto points = [&](const refine::Level& from, refine::Level& to) {
           refine::refine_primal_points(from, mask, scratch, to);
           if (from.creased)
             refine::apply_crease_rules(from, creasing, crease_scratch, to);
         };
-        points(p, c);
-        if (last && stencils)
-          stencils->error = detail::probe_stencils(
-              p, c, mask.pqq ? "pqq" : "ptq", false, points, stencils->table);
+        const auto probe = [&] {
+          if (last && stencils)
+            stencils->error = detail::probe_stencils(
+                p, c, mask.pqq ? "pqq" : "ptq", false, points, stencils->table);
+        };
+        // The last step of an uncreased run: points first (they need only
+        // the child's vertex count); then the scratch and what the child's
+        // corners do not need of the parent (its positions, halfedge tables
+        // and marks, the marked edges' ends taken) go before those corners
+        // are made. The creasing rules read the child's crease tables, made
+        // with its topology.
+        const bool points_first = last && !p.creased;
+        if (points_first) {
+          c = refine::Level();  // the level before p: smaller, no use
+          c.vertex_count = mask.pqq ? refine::pqq_child_vertex_count(p)
+                                    : refine::ptq_child_vertex_count(p);
+          points(p, c);
+          probe();
+          scratch = refine::Primal_scratch();
+          refine::release_before_last_topology(p, c);
+        }
+        if (mask.pqq)
+          refine::refine_pqq_topology(p, c, last);
+        else
+          refine::refine_ptq_topology(p, c, last);
+        if (p.creased) refine::refine_crease_tables(p, creasing, mask.pqq, c);
+        if (!points_first) {
+          points(p, c);
+          probe();
+        }
         return Status::success();
       },
       [&] {
@@ -560,14 +583,24 @@ Status run_pqt_steps(refine::Level& parent, Counts counts, double marks,
   return run_fast_steps(
       parent, counts, marks, options, in, input, out, level,
       [&](refine::Level& p, refine::Level& c, int, bool last) {
-        refine::refine_pqt_topology(p, c, last);
         const auto points = [&](const refine::Level& from, refine::Level& to) {
           refine::refine_pqt_points(from, mask, scratch, to);
         };
-        points(p, c);
-        if (last && stencils)
-          stencils->error = detail::probe_stencils(p, c, "pqt", false, points,
-                                                   stencils->table);
+        // The last step: points first, as run_primal_steps'.
+        if (last) {
+          c = refine::Level();  // the level before p: smaller, no use
+          c.vertex_count = refine::pqt_child_vertex_count(p);
+          points(p, c);
+          if (stencils)
+            stencils->error = detail::probe_stencils(p, c, "pqt", false, points,
+                                                     stencils->table);
+          scratch = refine::Primal_scratch();
+          refine::release_before_last_topology(p, c);
+          refine::refine_pqt_topology(p, c, last);
+        } else {
+          refine::refine_pqt_topology(p, c, last);
+          points(p, c);
+        }
         return Status::success();
       },
       [&] { scratch = refine::Primal_scratch(); });
@@ -633,6 +666,7 @@ Result<Size_prediction> predict_counts(Counts c, double given_marks,
     marks = given_marks > 0            ? given_marks
             : options.start_level == 0 ? c.edges
                                        : 0;
+  c.control_edge_pairs = marks > 0 && given_marks > 0;
   if (needs_triangles(options) && c.non_triangles > 0) {
     if (!options.triangulate) {
       result.status = not_triangles(options.scheme, c);

@@ -107,33 +107,20 @@ void split_edges(const Level& p, Level& c, std::uint32_t child_edges,
       cc[second_half(x, E)] = kNone;
     }
   }
+  if (!parts.targets) {
+    // The last level: release_before_last_topology took its marked edges'
+    // ends from the parent.
+    release(c.edge_marks);
+    return;
+  }
   release(c.marked_ends);
   if (p.edge_marks.empty()) {
     release(c.edge_marks);
-  } else if (parts.targets) {
+  } else {
     size_to(c.edge_marks, child_edges);
     std::memcpy(c.edge_marks.data(), p.edge_marks.data(), E);
     std::memcpy(c.edge_marks.data() + E, p.edge_marks.data(), E);
     std::fill(c.edge_marks.begin() + 2 * std::size_t{E}, c.edge_marks.end(), 0);
-  } else {
-    // The last level: a marked edge a-b's halves e (a -> m) and E + e
-    // (m -> b) are the marked edges, the spokes never are.
-    release(c.edge_marks);
-    const std::uint8_t* marks = p.edge_marks.data();
-    const std::uint32_t* pt = p.halfedge_target.data();
-    const auto marked = static_cast<std::size_t>(
-        std::count(p.edge_marks.begin(), p.edge_marks.end(), 1));
-    size_to(c.marked_ends, 4 * marked);
-    std::uint32_t* first = c.marked_ends.data();
-    std::uint32_t* second = first + 2 * marked;
-    for (std::uint32_t e = 0; e < E; ++e) {
-      if (marks[e] == 0) continue;
-      const std::uint32_t m = V + e;
-      *first++ = pt[2 * e + 1];
-      *first++ = m;
-      *second++ = m;
-      *second++ = pt[2 * e];
-    }
   }
 }
 
@@ -278,12 +265,52 @@ struct Parent {
 
 }  // namespace
 
+std::uint32_t pqq_child_vertex_count(const Level& p) {
+  return p.vertex_count + p.edge_count + p.face_count;
+}
+
+std::uint32_t ptq_child_vertex_count(const Level& p) {
+  return p.vertex_count + p.edge_count;
+}
+
+std::uint32_t pqt_child_vertex_count(const Level& p) {
+  return p.vertex_count + p.edge_count + polygon_count(p);
+}
+
+void release_before_last_topology(Level& p, Level& c) {
+  release(p.halfedge_corner);
+  release(p.positions);
+  release(c.marked_ends);
+  if (!p.edge_marks.empty()) {
+    // A marked edge a-b's halves e (a -> m) and E + e (m -> b) are the
+    // marked edges, the spokes never are.
+    const std::uint32_t V = p.vertex_count, E = p.edge_count;
+    const std::uint8_t* marks = p.edge_marks.data();
+    const std::uint32_t* pt = p.halfedge_target.data();
+    const auto marked = static_cast<std::size_t>(
+        std::count(p.edge_marks.begin(), p.edge_marks.end(), 1));
+    size_to(c.marked_ends, 4 * marked);
+    std::uint32_t* first = c.marked_ends.data();
+    std::uint32_t* second = first + 2 * marked;
+    for (std::uint32_t e = 0; e < E; ++e) {
+      if (marks[e] == 0) continue;
+      const std::uint32_t m = V + e;
+      *first++ = pt[2 * e + 1];
+      *first++ = m;
+      *second++ = m;
+      *second++ = pt[2 * e];
+    }
+  }
+  release(p.halfedge_target);
+  release(p.edge_marks);
+}
+
 void refine_pqq_topology(const Level& p, Level& c, bool last) {
   const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count,
                       S = p.corner_count();
   const Parts parts(last, p.creased);
   split_edges(p, c, 2 * E + S, 4 * std::size_t{S}, parts);
-  c.vertex_count = V + E + F;
+  c.vertex_count = pqq_child_vertex_count(p);
   c.face_count = S;
   c.uniform_degree = 4;
   release(c.face_offsets);
@@ -299,10 +326,10 @@ void refine_pqq_topology(const Level& p, Level& c, bool last) {
 }
 
 void refine_ptq_topology(const Level& p, Level& c, bool last) {
-  const std::uint32_t V = p.vertex_count, E = p.edge_count, F = p.face_count;
+  const std::uint32_t E = p.edge_count, F = p.face_count;
   const Parts parts(last, p.creased);
   split_edges(p, c, 2 * E + 3 * F, 12 * std::size_t{F}, parts);
-  c.vertex_count = V + E;
+  c.vertex_count = ptq_child_vertex_count(p);
   c.face_count = 4 * F;
   c.uniform_degree = 3;
   release(c.face_offsets);

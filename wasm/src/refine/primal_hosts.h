@@ -25,7 +25,9 @@ namespace refine {
 /// The child level's topology (everything but positions): counts,
 /// face_halfedges, halfedge_target, halfedge_corner unless `last` (the
 /// last level needs no further step), border count, edge marks. `child`'s
-/// vectors are reused. Preconditions: a valid level; PTQ: triangles.
+/// vectors are reused. Preconditions: a valid level; PTQ: triangles; with
+/// `last` on an uncreased level, release_before_last_topology(parent,
+/// child) first.
 void refine_pqq_topology(const Level& parent, Level& child, bool last);
 void refine_ptq_topology(const Level& parent, Level& child, bool last);
 /// PQT: any faces; the child holds triangles and quads, its face_offsets
@@ -34,6 +36,20 @@ void refine_pqt_topology(const Level& parent, Level& child, bool last);
 
 /// Faces of `level` that are not triangles (PQT's face points).
 std::uint32_t polygon_count(const Level& level);
+
+/// The vertex count of the child each host makes of `parent`: the points
+/// need only this of the child, so a step may compute them before its
+/// topology.
+std::uint32_t pqq_child_vertex_count(const Level& parent);
+std::uint32_t ptq_child_vertex_count(const Level& parent);
+std::uint32_t pqt_child_vertex_count(const Level& parent);
+
+/// Before the topology of the last level of an uncreased run (its points
+/// made): moves the marked edges' ends into `child` (marked_ends) and frees
+/// what that topology does not read of `parent`, its positions, halfedge
+/// targets and corners and edge marks, so that they never coexist with the
+/// child's corners.
+void release_before_last_topology(Level& parent, Level& child);
 
 /// Position of the corner, in parent face f (corners [begin, end)), that
 /// starts the CGAL corner order v1, v2, ...: the corner after the halfedge
