@@ -102,11 +102,21 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
   std::fill(sum, sum + 3 * std::size_t{V}, 0.0);
   const std::uint32_t* t = p.halfedge_target.data();
   const std::uint32_t* fv = p.face_vertices.data();
+  const std::uint32_t* fh = p.face_halfedges.data();
   const std::uint32_t* corner = p.halfedge_corner.data();
   const std::uint32_t* next = s.border_next.data();
   const std::uint32_t* prev = s.border_prev.data();
+  // The edge points' slots gather their wings (the face points, or the
+  // triangles' opposite vertices) from the face pass, which reads the
+  // faces in order: the edge pass then reads no face.
+  double* const edge_points = out + 3 * std::size_t{V};
+  std::fill(edge_points, edge_points + 3 * std::size_t{E}, 0.0);
+  const auto wing = [&](std::uint32_t h, const double* point) {
+    add(edge_points + 3 * std::size_t{h >> 1}, point);
+  };
 
-  // Faces: centroids, summed at their vertices (PQQ).
+  // Faces: centroids, summed at their vertices and edges (PQQ); the
+  // vertex opposite each edge (PTQ).
   double* face_sum = nullptr;
   if (mask.pqq) {
     face_sum = sum;
@@ -123,8 +133,21 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
         add(q, in + 3 * std::size_t{fv[i]});
       const double k = end - begin;
       for (int a = 0; a < 3; ++a) face_point[a] = q[a] / k;
-      for (std::uint32_t i = begin; i < end; ++i)
+      for (std::uint32_t i = begin; i < end; ++i) {
         add(face_sum + 3 * std::size_t{fv[i]}, face_point);
+        wing(fh[i], face_point);
+      }
+    }
+  } else {
+    // Triangles: corner i's halfedge ends at its vertex; the next corner's
+    // is opposite.
+    for (std::uint32_t c = 0; c < 3 * F; c += 3) {
+      const double* p0 = in + 3 * std::size_t{fv[c]};
+      const double* p1 = in + 3 * std::size_t{fv[c + 1]};
+      const double* p2 = in + 3 * std::size_t{fv[c + 2]};
+      wing(fh[c], p1);
+      wing(fh[c + 1], p2);
+      wing(fh[c + 2], p0);
     }
   }
 
@@ -132,32 +155,22 @@ void refine_primal_points(const Level& p, const Primal_mask& mask,
   const double end_w = mask.edge_end, wing_w = mask.edge_wing;
   const auto& be = mask.border_edge;
   const bool border_wide = be[0] != 0 || be[3] != 0;
-  double* edge_point = out + 3 * std::size_t{V};
+  double* edge_point = edge_points;
   for (std::uint32_t e = 0; e < E; ++e, edge_point += 3) {
     const std::uint32_t a = t[2 * e + 1], b = t[2 * e];
     const double* pa = in + 3 * std::size_t{a};
     const double* pb = in + 3 * std::size_t{b};
     add(sum + 3 * std::size_t{a}, pb);
     add(sum + 3 * std::size_t{b}, pa);
-    const std::uint32_t c0 = corner[2 * e], c1 = corner[2 * e + 1];
+    const std::uint32_t c0 = border ? corner[2 * e] : 0,
+                        c1 = border ? corner[2 * e + 1] : 0;
     if (c0 != kNone && c1 != kNone) {
-      const double *w0, *w1;
-      if (mask.pqq) {
-        const double* face_points = out + 3 * (std::size_t{V} + E);
-        w0 = face_points + 3 * std::size_t{p.corner_face(c0)};
-        w1 = face_points + 3 * std::size_t{p.corner_face(c1)};
-      } else {
-        // Triangles: the vertex opposite is the next corner's.
-        const std::uint32_t n0 = c0 % 3 == 2 ? c0 - 2 : c0 + 1,
-                            n1 = c1 % 3 == 2 ? c1 - 2 : c1 + 1;
-        w0 = in + 3 * std::size_t{fv[n0]};
-        w1 = in + 3 * std::size_t{fv[n1]};
-      }
+      // The slot holds its two wings' sum.
       for (int i = 0; i < 3; ++i)
-        edge_point[i] = end_w * (pa[i] + pb[i]) + wing_w * (w0[i] + w1[i]);
+        edge_point[i] = end_w * (pa[i] + pb[i]) + wing_w * edge_point[i];
     } else {
       // The border halfedge runs from s to u; the chain reads prev(s), s,
-      // u, next(u).
+      // u, next(u). The one wing the face pass added is not used.
       const std::uint32_t from = c0 == kNone ? a : b, to = c0 == kNone ? b : a;
       const double* ps = in + 3 * std::size_t{from};
       const double* pu = in + 3 * std::size_t{to};
