@@ -542,6 +542,14 @@ Counts counts_of(const refine::Level& l) {
   c.edges = l.edge_count;
   c.faces = l.face_count;
   c.border_edges = l.border_edge_count;
+  if (l.border_edge_count == 0 && l.uniform_degree != 0) {
+    // Closed, of one degree: nothing to count on the border, and the
+    // degrees are known (a level of millions of faces read twice less).
+    const double excess = static_cast<double>(l.uniform_degree) - 3;
+    c.non_triangles = excess != 0 ? c.faces : 0;
+    c.degree_excess = excess * c.faces;
+    return c;
+  }
   std::vector<std::uint32_t> valence;
   std::vector<bool> border;
   refine::vertex_valences(l, valence, border);

@@ -154,10 +154,13 @@ void vertex_valences(const Level& level, std::vector<std::uint32_t>& valence,
   valence.assign(level.vertex_count, 0);
   border.assign(level.vertex_count, false);
   const std::uint32_t* t = level.halfedge_target.data();
-  for (std::uint32_t h = 0; h < 2 * level.edge_count; ++h) {
-    ++valence[t[h]];
-    if (level.halfedge_corner[h] == kNone) border[t[h]] = true;
-  }
+  const std::uint32_t halfedges = 2 * level.edge_count;
+  std::uint32_t* count = valence.data();
+  for (std::uint32_t h = 0; h < halfedges; ++h) ++count[t[h]];
+  if (level.border_edge_count == 0) return;
+  const std::uint32_t* corner = level.halfedge_corner.data();
+  for (std::uint32_t h = 0; h < halfedges; ++h)
+    if (corner[h] == kNone) border[t[h]] = true;
 }
 
 void vertex_halfedges(const Level& level, Vertex_halfedges& r) {
