@@ -100,15 +100,27 @@ struct Half_edge {
 
 /// A corner leaving its vertex, as manifold_fast lists it: the vertex it
 /// goes to and the one the corner before it comes from; with `Numbered`,
-/// also the corner itself and the one before it (arriving), to pair them.
-template <bool Numbered>
+/// also the corner itself and the one before it (arriving), to pair them
+/// (K: the degree of every face, or 0).
+template <bool Numbered, std::uint32_t K>
 struct Leaving {
   std::uint32_t to, from;
 };
 template <>
-struct Leaving<true> {
+struct Leaving<true, 0> {
   std::uint32_t to, from;
   std::uint32_t corner, arriving;
+  std::uint32_t arriving_corner() const { return arriving; }
+};
+/// Faces all of degree K: the corner before is found by arithmetic, and
+/// an entry is 12 bytes instead of 16 (the lists are a third of the pass).
+template <std::uint32_t K>
+struct Leaving<true, K> {
+  std::uint32_t to, from;
+  std::uint32_t corner;
+  std::uint32_t arriving_corner() const {
+    return corner % K == 0 ? corner + K - 1 : corner - 1;
+  }
 };
 
 /// The edge and vertex checks of check_buffers, fast, on faces that passed
@@ -131,8 +143,9 @@ struct Leaving<true> {
 /// v's own list, so that the work is linear in the corners whatever the
 /// valences (a fan of a million triangles included) and mostly reads the
 /// list in order. `Numbered` (corner_halfedges given) also pairs the corners
-/// and numbers their halfedges; without it only the checks run.
-template <bool Numbered>
+/// and numbers their halfedges; without it only the checks run. K: the
+/// degree of every face, or 0 when they differ (or for the checks alone).
+template <bool Numbered, std::uint32_t K>
 bool manifold_fast(const std::vector<std::uint32_t>& sizes,
                    const std::vector<std::uint32_t>& idx, std::size_t nv,
                    std::vector<std::uint32_t>* corner_halfedges) {
@@ -148,8 +161,8 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   // Not zeroed: every entry is written by the counting sort. Without
   // numbering an entry is 8 bytes, and the check alone (read_mesh) moves
   // half the memory.
-  const std::unique_ptr<Leaving<Numbered>[]> leaving(
-      new Leaving<Numbered>[corners]);
+  using Entry = Leaving<Numbered, K>;
+  const std::unique_ptr<Entry[]> leaving(new Entry[corners]);
   {
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     std::uint32_t o = 0;
@@ -158,13 +171,11 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
         const std::uint32_t c = o + i;
         const std::uint32_t n = i + 1 == k ? o : c + 1;
         const std::uint32_t p = i == 0 ? o + k - 1 : c - 1;
-        Leaving<Numbered>& l = leaving[fill[idx[c]]++];
+        Entry& l = leaving[fill[idx[c]]++];
         l.to = idx[n];
         l.from = idx[p];
-        if constexpr (Numbered) {
-          l.corner = c;
-          l.arriving = p;
-        }
+        if constexpr (Numbered) l.corner = c;
+        if constexpr (Numbered && K == 0) l.arriving = p;
       }
       o += k;
     }
@@ -189,7 +200,7 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   // Pairs the n corners leaving a vertex (`list`) with the corners before
   // them and walks the chain; `find(u)` is where in the list the corner to
   // u is, or none. False when they do not make one fan.
-  const auto pair_and_walk = [&](const Leaving<Numbered>* list, std::uint32_t n,
+  const auto pair_and_walk = [&](const Entry* list, std::uint32_t n,
                                  std::uint32_t* step, std::uint8_t* led_to,
                                  auto&& find) {
     std::fill(step, step + n, none);
@@ -197,7 +208,8 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
     for (std::uint32_t i = 0; i < n; ++i) {
       const std::uint32_t j = find(list[i].from);
       if (j == none) continue;  // a border edge arrives here
-      if constexpr (Numbered) opposite[list[i].arriving] = list[j].corner;
+      if constexpr (Numbered)
+        opposite[list[i].arriving_corner()] = list[j].corner;
       step[i] = j;
       led_to[j] = 1;
     }
@@ -217,7 +229,7 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t b = start[v], n = start[v + 1] - b;
     if (n < 2 && !Numbered) continue;
-    const Leaving<Numbered>* list = &leaving[b];
+    const Entry* list = &leaving[b];
     bool fan = false;
     if (n <= kFew) {
       for (std::uint32_t i = 0; i + 1 < n; ++i)
@@ -337,10 +349,19 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
       o += k;
     }
   }
-  if (corner_halfedges != nullptr
-          ? manifold_fast<true>(sizes, idx, nv, corner_halfedges)
-          : manifold_fast<false>(sizes, idx, nv, nullptr))
-    return {};
+  const std::uint32_t degree = sizes[0];
+  const bool uniform = std::all_of(
+      sizes.begin(), sizes.end(), [&](std::uint32_t k) { return k == degree; });
+  bool manifold = false;
+  if (corner_halfedges == nullptr)
+    manifold = manifold_fast<false, 0>(sizes, idx, nv, nullptr);
+  else if (uniform && degree == 3)
+    manifold = manifold_fast<true, 3>(sizes, idx, nv, corner_halfedges);
+  else if (uniform && degree == 4)
+    manifold = manifold_fast<true, 4>(sizes, idx, nv, corner_halfedges);
+  else
+    manifold = manifold_fast<true, 0>(sizes, idx, nv, corner_halfedges);
+  if (manifold) return {};
 
   std::vector<std::uint32_t> face_of(idx.size());
   for (std::size_t f = 0; f < sizes.size(); ++f) {
