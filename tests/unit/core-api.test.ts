@@ -1,7 +1,7 @@
 /** The TypeScript API over the WASM core: init, round trips, facts, names. */
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initNode } from '../../web/core/init-node';
-import type { MeshFormat } from '../../web/core/mesh';
+import type { MeshFormat, SchemeName } from '../../web/core/mesh';
 import {
   exportMesh,
   formatFromFileName,
@@ -192,6 +192,39 @@ describe('predictSize', () => {
     // An open level goes through its arrays (facts that say otherwise are not read).
     const grid = loadFixture('grid-open.off');
     expect(predictSizeOfLevel(grid, { ...meshFacts(grid), vertices: 10 ** 6 }, cc)).toEqual(predictSize(grid, cc));
+  });
+});
+
+describe("CGAL's hosts (option cgalHosts)", () => {
+  const RUNS: [string, SchemeName][] = [
+    ['torus-quad.off', 'catmull-clark'],
+    ['grid-open.off', 'catmull-clark'],
+    ['torus-tri.off', 'loop'],
+    ['disk-tri.off', 'loop'],
+    ['torus-quad.off', 'doo-sabin'],
+    ['grid-open.off', 'doo-sabin'],
+    ['torus-tri.off', 'sqrt3'],
+    ['mixed-open.off', 'quad-triangle'],
+  ];
+  it.each(RUNS)('%s, %s x2: the same mesh as the fast hosts, index for index', (name, scheme) => {
+    const mesh = loadFixture(name);
+    const fast = subdivide(mesh, { scheme, levels: 2 });
+    const cgal = subdivide(mesh, { scheme, levels: 2, cgalHosts: true });
+    expect(Array.from(cgal.faceSizes)).toEqual(Array.from(fast.faceSizes));
+    expect(Array.from(cgal.faceIndices)).toEqual(Array.from(fast.faceIndices));
+    // The same control edges, listed in another order.
+    const pairs = (edges: Uint32Array) =>
+      Array.from({ length: edges.length / 2 }, (_, i) => `${edges[2 * i]} ${edges[2 * i + 1]}`).sort();
+    expect(pairs(cgal.controlEdges)).toEqual(pairs(fast.controlEdges));
+    expectSamePoints(cgal, fast);
+  });
+
+  it('are predicted larger than the fast hosts, with the same counts', () => {
+    const mesh = loadFixture('torus-quad.off');
+    const fast = predictSize(mesh, { scheme: 'catmull-clark', levels: 3 });
+    const cgal = predictSize(mesh, { scheme: 'catmull-clark', levels: 3, cgalHosts: true });
+    expect([cgal.vertices, cgal.edges, cgal.faces]).toEqual([fast.vertices, fast.edges, fast.faces]);
+    expect(cgal.peakBytes).toBeGreaterThan(2 * fast.peakBytes);
   });
 });
 

@@ -401,6 +401,8 @@ Status from_js_options(const val& js, Subdivide_options& options) {
     if (!render.isUndefined()) options.render_buffers = render.as<bool>();
     const val smooth = js["smoothBoundary"];
     if (!smooth.isUndefined()) options.smooth_boundary = smooth.as<bool>();
+    const val cgal_hosts = js["cgalHosts"];
+    if (!cgal_hosts.isUndefined()) options.cgal_hosts = cgal_hosts.as<bool>();
     const val method = js["creaseMethod"];
     if (!method.isUndefined())
       options.crease_method =

@@ -8,7 +8,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { performance } from 'node:perf_hooks';
 import { initNode } from '../core/init-node';
-import type { MeshFormat, SchemeName, SubdivideOptions } from '../core/mesh';
+import type { Mesh, MeshFormat, SchemeName, SubdivideOptions } from '../core/mesh';
 import { parseRuleSetText } from '../core/rule-set';
 import {
   exportMesh,
@@ -28,6 +28,11 @@ export interface SchemeTiming {
   runs_ms: number[];
   /** predictSize's peak bytes for the run: the memory model, which bounds the measured peak (core tests). */
   peak_bytes: number;
+  /**
+   * The same run on CGAL's hosts (option cgalHosts: the product before the
+   * fast hosts), when asked: its median ms and predicted peak bytes.
+   */
+  cgal_hosts?: { median_ms: number; runs_ms: number[]; peak_bytes: number };
 }
 
 function median(values: number[]): number {
@@ -48,9 +53,25 @@ function benchOptions(scheme: string, levels: number, rulesDir: string): Subdivi
   return { scheme: 'custom', levels, rules };
 }
 
+/** One untimed warm-up run and `runs` timed runs of `subdivide(mesh, options)`: the times and the faces made. */
+function timeRuns(mesh: Mesh, options: SubdivideOptions, runs: number): { times: number[]; faces: number } {
+  const times: number[] = [];
+  let faces = 0;
+  for (let r = 0; r <= runs; r++) {
+    const start = performance.now();
+    const out = subdivide(mesh, options);
+    const ms = performance.now() - start;
+    faces = out.faceSizes.length;
+    if (r > 0) times.push(ms);
+  }
+  return { times, faces };
+}
+
 /**
  * One untimed warm-up run and `runs` timed runs of `levels` levels of each
- * scheme (see benchOptions) on the mesh at `path`.
+ * scheme (see benchOptions) on the mesh at `path`; with `cgalRuns`, as
+ * many of the same on CGAL's hosts (the product before its fast hosts),
+ * which must make as many faces.
  */
 export async function benchWasm(
   path: string,
@@ -58,22 +79,31 @@ export async function benchWasm(
   schemes: string[],
   levels = 1,
   rulesDir = '',
+  cgalRuns = 0,
 ): Promise<SchemeTiming[]> {
   await initNode();
   const mesh = parseMesh(readFileSync(path, 'utf8'), formatFromFileName(path) ?? 'off');
   return schemes.map((scheme) => {
     const options = benchOptions(scheme, levels, rulesDir);
-    const times: number[] = [];
-    let faces = 0;
-    for (let r = 0; r <= runs; r++) {
-      const start = performance.now();
-      const out = subdivide(mesh, options);
-      const ms = performance.now() - start;
-      faces = out.faceSizes.length;
-      if (r > 0) times.push(ms);
+    const { times, faces } = timeRuns(mesh, options, runs);
+    const timing: SchemeTiming = {
+      scheme,
+      faces,
+      median_ms: median(times),
+      runs_ms: times,
+      peak_bytes: predictSize(mesh, options).peakBytes,
+    };
+    if (cgalRuns > 0) {
+      const cgal = { ...options, cgalHosts: true };
+      const before = timeRuns(mesh, cgal, cgalRuns);
+      if (before.faces !== faces) throw new Error(`${scheme}: CGAL's hosts make ${before.faces} faces, not ${faces}`);
+      timing.cgal_hosts = {
+        median_ms: median(before.times),
+        runs_ms: before.times,
+        peak_bytes: predictSize(mesh, cgal).peakBytes,
+      };
     }
-    const peak_bytes = predictSize(mesh, options).peakBytes;
-    return { scheme, faces, median_ms: median(times), runs_ms: times, peak_bytes };
+    return timing;
   });
 }
 

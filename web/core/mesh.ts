@@ -99,6 +99,14 @@ export interface SubdivideOptions {
    * the memory check and prediction include them. Default false.
    */
   renderBuffers?: boolean;
+  /**
+   * Refine on CGAL's own hosts (Subdivision_method_3 on a Surface_mesh, the
+   * reference the fast hosts are tested against) instead of the fast flat
+   * tables: the same mesh, numbered alike (control edges listed in another
+   * order), several times slower and larger. Tags (creases, corners, holes)
+   * are the fast hosts' only: CGAL's apply none. Default false.
+   */
+  cgalHosts?: boolean;
 }
 
 export interface SizePrediction {
