@@ -412,6 +412,25 @@ Status run_fast_steps(refine::Level& parent, Counts counts, double marks,
   return Status::success();
 }
 
+/// The last step of an uncreased PQQ, PTQ or PQT run: its points first
+/// (they need only the child's vertex count) and the stencils probed when
+/// asked; then the scratch and what the child's corners do not read of the
+/// parent (refine::release_before_last_topology) go before `topology`
+/// makes those corners, so that they never coexist.
+template <class Points, class Probe, class Topology>
+void points_then_topology(refine::Level& p, refine::Level& c,
+                          std::uint32_t child_vertices, Points&& points,
+                          Probe&& probe, refine::Primal_scratch& scratch,
+                          Topology&& topology) {
+  c = refine::Level();  // the level before p: smaller, of no use now
+  c.vertex_count = child_vertices;
+  points(p, c);
+  probe();
+  scratch = refine::Primal_scratch();
+  refine::release_before_last_topology(p, c);
+  topology();
+}
+
 /// The primal hosts (`mask` from refine::primal_mask); with OpenSubdiv's
 /// creasing when level 0 is creased (apply_tags).
 Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
@@ -439,31 +458,25 @@ Status run_primal_steps(refine::Level& parent, Counts counts, double marks,
             stencils->error = detail::probe_stencils(
                 p, c, mask.pqq ? "pqq" : "ptq", false, points, stencils->table);
         };
-        // The last step of an uncreased run: points first (they need only
-        // the child's vertex count); then the scratch and what the child's
-        // corners do not need of the parent (its positions, halfedge tables
-        // and marks, the marked edges' ends taken) go before those corners
-        // are made. The creasing rules read the child's crease tables, made
-        // with its topology.
-        const bool points_first = last && !p.creased;
-        if (points_first) {
-          c = refine::Level();  // the level before p: smaller, no use
-          c.vertex_count = mask.pqq ? refine::pqq_child_vertex_count(p)
-                                    : refine::ptq_child_vertex_count(p);
-          points(p, c);
-          probe();
-          scratch = refine::Primal_scratch();
-          refine::release_before_last_topology(p, c);
+        const auto topology = [&] {
+          if (mask.pqq)
+            refine::refine_pqq_topology(p, c, last);
+          else
+            refine::refine_ptq_topology(p, c, last);
+        };
+        // The creasing rules read the child's crease tables, made with its
+        // topology: a creased run keeps that order to its end.
+        if (last && !p.creased) {
+          points_then_topology(p, c,
+                               mask.pqq ? refine::pqq_child_vertex_count(p)
+                                        : refine::ptq_child_vertex_count(p),
+                               points, probe, scratch, topology);
+          return Status::success();
         }
-        if (mask.pqq)
-          refine::refine_pqq_topology(p, c, last);
-        else
-          refine::refine_ptq_topology(p, c, last);
+        topology();
         if (p.creased) refine::refine_crease_tables(p, creasing, mask.pqq, c);
-        if (!points_first) {
-          points(p, c);
-          probe();
-        }
+        points(p, c);
+        probe();
         return Status::success();
       },
       [&] {
@@ -586,21 +599,19 @@ Status run_pqt_steps(refine::Level& parent, Counts counts, double marks,
         const auto points = [&](const refine::Level& from, refine::Level& to) {
           refine::refine_pqt_points(from, mask, scratch, to);
         };
-        // The last step: points first, as run_primal_steps'.
-        if (last) {
-          c = refine::Level();  // the level before p: smaller, no use
-          c.vertex_count = refine::pqt_child_vertex_count(p);
-          points(p, c);
-          if (stencils)
+        const auto probe = [&] {
+          if (last && stencils)
             stencils->error = detail::probe_stencils(p, c, "pqt", false, points,
                                                      stencils->table);
-          scratch = refine::Primal_scratch();
-          refine::release_before_last_topology(p, c);
-          refine::refine_pqt_topology(p, c, last);
-        } else {
-          refine::refine_pqt_topology(p, c, last);
-          points(p, c);
+        };
+        const auto topology = [&] { refine::refine_pqt_topology(p, c, last); };
+        if (last) {
+          points_then_topology(p, c, refine::pqt_child_vertex_count(p), points,
+                               probe, scratch, topology);
+          return Status::success();
         }
+        topology();
+        points(p, c);
         return Status::success();
       },
       [&] { scratch = refine::Primal_scratch(); });
