@@ -305,12 +305,10 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
   }
 
   // Per-face checks, first failing face wins.
-  std::vector<std::uint32_t> offset(sizes.size());
   {
     std::vector<std::uint32_t> scratch;
     std::uint32_t o = 0;
     for (std::size_t f = 0; f < sizes.size(); ++f) {
-      offset[f] = o;
       const std::uint32_t k = sizes[f];
       if (k < 3) {
         return name.fail(
@@ -363,6 +361,10 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
     manifold = manifold_fast<true, 0>(sizes, idx, nv, corner_halfedges);
   if (manifold) return {};
 
+  // The careful pass, which names the problem.
+  std::vector<std::uint32_t> offset(sizes.size());
+  for (std::size_t f = 0, o = 0; f < sizes.size(); o += sizes[f++])
+    offset[f] = static_cast<std::uint32_t>(o);
   std::vector<std::uint32_t> face_of(idx.size());
   for (std::size_t f = 0; f < sizes.size(); ++f) {
     std::fill(face_of.begin() + offset[f],

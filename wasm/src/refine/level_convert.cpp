@@ -67,22 +67,26 @@ Level level_from_mesh(const Mesh& mesh) {
 namespace {
 
 /// level_from_buffers' corner tables, with `vertex` giving each input
-/// vertex's index in the level.
+/// vertex's index in the level; the face offsets only on a level that has
+/// them (mixed degrees). On a closed level every halfedge is a corner's,
+/// whose target it is given; a border halfedge's comes from the other side.
 template <class Vertex>
 void fill_corners(const Mesh_buffers& in,
                   const std::vector<std::uint32_t>& corner_halfedges,
                   Vertex&& vertex, Level& l) {
+  const bool closed = l.border_edge_count == 0;
   const std::uint32_t* idx = in.face_indices.data();
   const std::uint32_t* sizes = in.face_sizes.data();
   std::uint32_t* face_halfedges = l.face_halfedges.data();
   std::uint32_t* face_vertices = l.face_vertices.data();
   std::uint32_t* corner = l.halfedge_corner.data();
   std::uint32_t* target = l.halfedge_target.data();
-  std::uint32_t* offsets = l.face_offsets.data();
+  std::uint32_t* offsets =
+      l.face_offsets.empty() ? nullptr : l.face_offsets.data();
   std::uint32_t o = 0;
   for (std::uint32_t f = 0; f < l.face_count; ++f) {
     const std::uint32_t k = sizes[f];
-    offsets[f] = o;
+    if (offsets != nullptr) offsets[f] = o;
     // Surface_mesh::add_face starts the face at its last corner's halfedge:
     // corner j of the level is the input's corner j - 1, which ends at j.
     for (std::uint32_t j = 0; j < k; ++j) {
@@ -93,11 +97,11 @@ void fill_corners(const Mesh_buffers& in,
       corner[h] = o + j;
       face_vertices[o + j] = v;
       target[h] = v;
-      target[h ^ 1] = vertex(idx[from]);
+      if (!closed) target[h ^ 1] = vertex(idx[from]);
     }
     o += k;
   }
-  offsets[l.face_count] = o;
+  if (offsets != nullptr) offsets[l.face_count] = o;
 }
 
 }  // namespace
@@ -129,23 +133,26 @@ Level level_from_buffers(const Mesh_buffers& in,
   const std::uint32_t corners =
       static_cast<std::uint32_t>(corner_halfedges.size());
   l.border_edge_count = 2 * edges - corners;
+  const std::uint32_t degree = in.face_sizes[0];
+  if (std::all_of(in.face_sizes.begin(), in.face_sizes.end(),
+                  [&](std::uint32_t k) { return k == degree; }))
+    l.uniform_degree = degree;
+  else
+    l.face_offsets.resize(std::size_t{l.face_count} + 1);
   l.halfedge_target.resize(2 * std::size_t{edges});
-  l.halfedge_corner.assign(2 * std::size_t{edges}, kNone);
+  // Every halfedge of a closed level is a corner's.
+  if (l.border_edge_count == 0)
+    l.halfedge_corner.resize(2 * std::size_t{edges});
+  else
+    l.halfedge_corner.assign(2 * std::size_t{edges}, kNone);
   l.face_halfedges.resize(corners);
   l.face_vertices.resize(corners);
-  l.face_offsets.resize(std::size_t{l.face_count} + 1);
   if (all_used)
     fill_corners(
         in, corner_halfedges, [](std::uint32_t v) { return v; }, l);
   else
     fill_corners(
         in, corner_halfedges, [&](std::uint32_t v) { return rank[v]; }, l);
-  const std::uint32_t degree = in.face_sizes[0];
-  if (std::all_of(in.face_sizes.begin(), in.face_sizes.end(),
-                  [&](std::uint32_t k) { return k == degree; })) {
-    l.uniform_degree = degree;
-    release(l.face_offsets);
-  }
   return l;
 }
 
