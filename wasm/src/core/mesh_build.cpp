@@ -196,7 +196,16 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
   std::vector<std::uint32_t> many_step(most > kFew ? most : 0);
   std::vector<std::uint8_t> many_led_to(most > kFew ? most : 0);
   std::uint32_t few_step[kFew];
-  std::uint8_t few_led_to[kFew];
+  // Whether the chain `step` from `first` (the corner nothing leads to, on
+  // a border; any, closed) goes through all n corners.
+  const auto one_chain = [](const std::uint32_t* step, std::uint32_t n,
+                            std::uint32_t first) {
+    std::uint32_t walked = 1;
+    for (std::uint32_t i = step[first]; i != none && i != first; i = step[i]) {
+      if (++walked > n) return false;
+    }
+    return walked == n;
+  };
   // Pairs the n corners leaving a vertex (`list`) with the corners before
   // them and walks the chain; `find(u)` is where in the list the corner to
   // u is, or none. False when they do not make one fan.
@@ -220,11 +229,7 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
       first = i;
       break;
     }
-    std::uint32_t walked = 1;
-    for (std::uint32_t i = step[first]; i != none && i != first; i = step[i]) {
-      if (++walked > n) return false;
-    }
-    return walked == n;
+    return one_chain(step, n, first);
   };
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t b = start[v], n = start[v + 1] - b;
@@ -232,14 +237,27 @@ bool manifold_fast(const std::vector<std::uint32_t>& sizes,
     const Entry* list = &leaving[b];
     bool fan = false;
     if (n <= kFew) {
-      for (std::uint32_t i = 0; i + 1 < n; ++i)
-        for (std::uint32_t j = i + 1; j < n; ++j)
-          if (list[i].to == list[j].to) return false;
-      fan = pair_and_walk(list, n, few_step, few_led_to, [&](std::uint32_t u) {
-        for (std::uint32_t j = 0; j < n; ++j)
-          if (list[j].to == u) return j;
-        return none;
-      });
+      // pair_and_walk in one pass over the pairs: the ends distinct, and
+      // each corner's predecessor's opposite found (the only one, then);
+      // a bit for each corner led to.
+      std::uint32_t led = 0;
+      for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t to = list[i].to, from = list[i].from;
+        std::uint32_t found = none;
+        for (std::uint32_t j = 0; j < n; ++j) {
+          if (j > i && list[j].to == to) return false;
+          if (list[j].to == from) found = j;
+        }
+        few_step[i] = found;
+        if (found == none) continue;  // a border edge arrives here
+        if constexpr (Numbered)
+          opposite[list[i].arriving_corner()] = list[found].corner;
+        led |= 1u << found;
+      }
+      if (n < 2) continue;
+      std::uint32_t first = 0;
+      while (first < n && (led >> first & 1u) != 0) ++first;
+      fan = one_chain(few_step, n, first == n ? 0 : first);
     } else {
       const auto stamp = static_cast<std::uint32_t>(v);
       for (std::uint32_t i = 0; i < n; ++i) {
