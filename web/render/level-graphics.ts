@@ -24,9 +24,10 @@ import { INFINITELY_SHARP, type MeshTags, type RenderBuffers } from '../core/mes
 /**
  * Bytes of index one draw call takes at most: a larger surface or edge
  * list is drawn in parts (the same triangles in the same order), so that
- * each part's index goes to the GPU in a frame of its own.
+ * each part's index goes to the GPU in a frame of its own (as much as a
+ * frame sends: UPLOAD_BYTES_PER_FRAME in shared-renderer.ts).
  */
-export const PART_INDEX_BYTES = 8 * 1024 * 1024;
+export const PART_INDEX_BYTES = 4 * 1024 * 1024;
 
 /** `whole` as geometries of at most `per` indices each, sharing its attributes (itself when it fits). */
 function partsOf(whole: BufferGeometry, index: Uint32Array, per: number): BufferGeometry[] {

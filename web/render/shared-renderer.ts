@@ -31,10 +31,12 @@ type Attribute = BufferAttribute | InterleavedBufferAttribute;
  * Bytes a view sends to the GPU per animation frame before the first draw
  * of a large level. Chromium copies a buffer to the GPU process within the
  * call that hands it over, at about 2–4 ms per megabyte with SwiftShader on
- * a loaded machine: a 1 M-face level (30–45 MB) in one frame would hold the
- * page for 40–130 ms.
+ * a loaded machine, and more when a frame's buffers pass its transfer
+ * space: a 1 M-face level (30–45 MB) in one frame would hold the page for
+ * 40–130 ms, and 8 MB frames of a 1.2 M-triangle file took 56–76 ms each
+ * where 4 MB ones stay under 50.
  */
-export const UPLOAD_BYTES_PER_FRAME = 8 * 1024 * 1024;
+export const UPLOAD_BYTES_PER_FRAME = 4 * 1024 * 1024;
 
 /**
  * Whether WebGL draws on the CPU (SwiftShader, llvmpipe: a machine or VM
