@@ -365,15 +365,14 @@ Check_result check_buffers(const Mesh_buffers& in, const Check_naming& naming,
       o += k;
     }
   }
-  const std::uint32_t degree = sizes[0];
-  const bool uniform = std::all_of(
-      sizes.begin(), sizes.end(), [&](std::uint32_t k) { return k == degree; });
+  const std::uint32_t degree =
+      corner_halfedges != nullptr ? in.uniform_face_degree() : 0;
   bool manifold = false;
   if (corner_halfedges == nullptr)
     manifold = manifold_fast<false, 0>(sizes, idx, nv, nullptr);
-  else if (uniform && degree == 3)
+  else if (degree == 3)
     manifold = manifold_fast<true, 3>(sizes, idx, nv, corner_halfedges);
-  else if (uniform && degree == 4)
+  else if (degree == 4)
     manifold = manifold_fast<true, 4>(sizes, idx, nv, corner_halfedges);
   else
     manifold = manifold_fast<true, 0>(sizes, idx, nv, corner_halfedges);

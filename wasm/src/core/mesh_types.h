@@ -99,6 +99,14 @@ struct Mesh_buffers {
 
   std::size_t vertex_count() const { return positions.size() / 3; }
   std::size_t face_count() const { return face_sizes.size(); }
+  /// The degree every face has, or 0 when they differ (or there are none).
+  std::uint32_t uniform_face_degree() const {
+    if (face_sizes.empty()) return 0;
+    const std::uint32_t k = face_sizes[0];
+    for (std::uint32_t size : face_sizes)
+      if (size != k) return 0;
+    return k;
+  }
 };
 
 /// What went wrong, as data. The bindings turn it into a JS error.

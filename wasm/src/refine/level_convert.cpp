@@ -133,11 +133,8 @@ Level level_from_buffers(const Mesh_buffers& in,
   const std::uint32_t corners =
       static_cast<std::uint32_t>(corner_halfedges.size());
   l.border_edge_count = 2 * edges - corners;
-  const std::uint32_t degree = in.face_sizes[0];
-  if (std::all_of(in.face_sizes.begin(), in.face_sizes.end(),
-                  [&](std::uint32_t k) { return k == degree; }))
-    l.uniform_degree = degree;
-  else
+  l.uniform_degree = in.uniform_face_degree();
+  if (l.uniform_degree == 0)
     l.face_offsets.resize(std::size_t{l.face_count} + 1);
   l.halfedge_target.resize(2 * std::size_t{edges});
   // Every halfedge of a closed level is a corner's.
