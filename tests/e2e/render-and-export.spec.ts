@@ -4,8 +4,17 @@
  */
 import { readFileSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
+import { PARTED_ATTRIBUTE_BYTES } from '../../web/render/parted-attribute';
 import { expect, test } from './fixtures';
-import { cameraFacingFaces, edgeCount, PNG_SIGNATURE, projectedFacingFaces, readOff, readPng } from './helpers';
+import {
+  cameraFacingFaces,
+  edgeCount,
+  PNG_SIGNATURE,
+  type PngInfo,
+  projectedFacingFaces,
+  readOff,
+  readPng,
+} from './helpers';
 
 const CUBE = readFileSync('public/meshes/cube.off', 'utf8');
 
@@ -58,6 +67,68 @@ test('render modes, the control-mesh overlay and the bounding box change the pic
     expect((await app.state()).overlays.bbox).toBe(true);
     expect((await app.canvasPixels()).equals(before)).toBe(false);
   });
+});
+
+test('levels whose points and normals go to the GPU in parts are drawn as the level before them', async ({ app }) => {
+  test.setTimeout(120_000);
+  await app.open();
+  // A grid of 300 × 300 quads with one gentle bump: Catmull-Clark keeps its outline and its shading.
+  const n = 300;
+  const points: string[] = [];
+  const quads: string[] = [];
+  for (let j = 0; j <= n; j++)
+    for (let i = 0; i <= n; i++)
+      points.push(`${i / n} ${j / n} ${0.2 * Math.sin((Math.PI * i) / n) * Math.sin((Math.PI * j) / n)}`);
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++)
+      quads.push(`4 ${j * (n + 1) + i} ${j * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i}`);
+  await app.load('bump.off', `OFF\n${points.length} ${quads.length} 0\n${points.join('\n')}\n${quads.join('\n')}\n`);
+  await app.byTestId('controls.overlay-control').uncheck();
+  await app.byTestId('controls.render-mode').selectOption('smooth');
+  // The facts panel over the view changes with the level: pixels under it are left out.
+  const canvas = await app.canvas.boundingBox();
+  const panel = await app.byTestId('facts').boundingBox();
+  if (!canvas || !panel) throw new Error('no canvas or facts panel');
+  const underPanel = (x: number, y: number) =>
+    x <= panel.x + panel.width - canvas.x + 20 && y <= panel.y + panel.height - canvas.y + 20;
+  const pictureOf = async (level: number) => {
+    // The draw follows the level's upload by some frames.
+    await expect.poll(async () => (await app.state()).drawn?.level, { timeout: 60_000 }).toBe(level);
+    return readPng(await app.canvasPixels());
+  };
+  const level0 = await pictureOf(0);
+  /** Pixels of the surface (not the background) in `png`, and those whose colour differs from `level0`'s. */
+  const compare = (png: PngInfo) => {
+    let surface = 0;
+    let differ = 0;
+    for (let y = 0; y < png.height; ++y) {
+      for (let x = 0; x < png.width; ++x) {
+        if (underPanel(x, y)) continue;
+        const [r, g, b] = png.pixel(x, y);
+        const [r0, g0, b0] = level0.pixel(x, y);
+        if (Math.max(Math.abs(r - 0xf3), Math.abs(g - 0xf4), Math.abs(b - 0xf6)) > 8) surface++;
+        if (Math.max(Math.abs(r - r0), Math.abs(g - g0), Math.abs(b - b0)) > 24) differ++;
+      }
+    }
+    return { surface, differ };
+  };
+  const before = compare(level0);
+  // The grid fills much of the view.
+  expect(before.surface).toBeGreaterThan((level0.width * level0.height) / 4);
+  // 90,601 points at level 0 (1.1 MB), 361,201 at level 1 and 1,442,401 at level 2 (17 MB, five parts).
+  for (const [level, vertices] of [
+    [1, 361_201],
+    [2, 1_442_401],
+  ] as const) {
+    await test.step(`level ${level}: ${vertices} points`, async () => {
+      expect((await app.subdivide()).facts?.vertices).toBe(vertices);
+      expect(12 * vertices).toBeGreaterThan(PARTED_ATTRIBUTE_BYTES);
+      const { surface, differ } = compare(await pictureOf(level));
+      // The same outline and the same shading: a part of the points or normals missing would leave holes or dark patches.
+      expect(Math.abs(surface - before.surface)).toBeLessThan(before.surface / 200);
+      expect(differ).toBeLessThan(before.surface / 200);
+    });
+  }
 });
 
 test('control-edge curves: the marked edges of a refined level, drawn and exported', async ({ app }) => {

@@ -8,6 +8,14 @@ import { type Download, expect, type Locator, type Page, test } from '@playwrigh
 import type { SubdivLabTestState } from '../../web/app/test-api';
 
 /** Counts shown in the facts panel. */
+/** What the page showed when the progress box came up (SubdivLabPage.cancelWhenProgressShows). */
+export interface ProgressSeen {
+  label: string;
+  busy: boolean;
+  /** Milliseconds late a timer set for 0 ms ran. */
+  lateMs: number;
+}
+
 export interface ShownFacts {
   vertices: number;
   edges: number;
@@ -141,29 +149,45 @@ export class SubdivLabPage {
 
   /**
    * Arms Cancel: the page itself presses the progress box's Cancel the moment
-   * the box shows, and the returned promise resolves once it has. A click from
-   * Playwright can come too late: a step only a little longer than the box's
-   * 200 ms delay ends between the box showing and the click.
+   * the box shows, and the returned promise resolves once it has, with what
+   * the page showed then: the box's label, whether the app said it was busy,
+   * and how late a timer set for 0 ms then ran (the main thread's answer
+   * while the worker computes). A click from Playwright can come too late: a
+   * step only a little longer than the box's 200 ms delay ends between the
+   * box showing and the click.
    */
-  async cancelWhenProgressShows(): Promise<() => Promise<void>> {
+  async cancelWhenProgressShows(): Promise<() => Promise<ProgressSeen>> {
     await this.page.evaluate(() => {
-      const flag = window as unknown as { cancelPressed?: boolean };
-      flag.cancelPressed = false;
+      const flag = window as unknown as { cancelPressed?: ProgressSeen | null };
+      flag.cancelPressed = null;
       const box = document.querySelector<HTMLElement>('[data-testid="progress"]');
       const cancel = document.querySelector<HTMLButtonElement>('[data-testid="progress.cancel"]');
-      if (!box || !cancel) throw new Error('no progress box');
+      const label = document.querySelector<HTMLElement>('[data-testid="progress.label"]');
+      if (!box || !cancel || !label) throw new Error('no progress box');
       const observer = new MutationObserver(() => {
         if (box.hidden) return;
         observer.disconnect();
-        cancel.click();
-        flag.cancelPressed = true;
+        const seen = { label: label.textContent ?? '', busy: window.__subdivlab?.state().busy === true, lateMs: 0 };
+        const set = performance.now();
+        setTimeout(() => {
+          seen.lateMs = performance.now() - set;
+          cancel.click();
+          flag.cancelPressed = seen;
+        }, 0);
       });
       observer.observe(box, { attributes: true, attributeFilter: ['hidden'] });
     });
     return async () => {
+      let seen: ProgressSeen | null = null;
       await expect
-        .poll(() => this.page.evaluate(() => (window as unknown as { cancelPressed?: boolean }).cancelPressed))
+        .poll(async () => {
+          seen = await this.page.evaluate(
+            () => (window as unknown as { cancelPressed: ProgressSeen | null }).cancelPressed,
+          );
+          return seen !== null;
+        })
         .toBe(true);
+      return seen as unknown as ProgressSeen;
     };
   }
 

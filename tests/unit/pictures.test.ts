@@ -85,6 +85,25 @@ describe('fitCamera', () => {
     }
   });
 
+  it('frames points far from the origin as tightly (the fit measures from the box centre in one pass)', () => {
+    const far = cube(1e4, -2e4, 5e3).map((x, i) => x + 0.3 * Math.sin(i));
+    const free = { x0: 0.3, y0: 0.1, x1: 1, y1: 0.9 };
+    const fit = fitCamera({
+      points: [far],
+      direction: new Vector3(-0.4, 1, 0.7),
+      up: new Vector3(0, 1, 0),
+      fov: 35,
+      aspect: 1.4,
+      free,
+    });
+    if (!fit) throw new Error('no fit');
+    const ndc = ndcOf(far, fit, 1.4);
+    const [cx, hx, hy] = [0.3, 0.7 * FIT_FILL, 0.8 * FIT_FILL];
+    // Inside the free rectangle, touching its margin on one side.
+    const widest = Math.max(...ndc.map((p) => Math.max(Math.abs(p.x - cx) / hx, Math.abs(p.y) / hy)));
+    expect(widest).toBeCloseTo(1, 6);
+  });
+
   it('puts the model in the free part of the canvas', () => {
     const free = { x0: 0.25, y0: 0, x1: 1, y1: 1 };
     const fit = fitCamera({

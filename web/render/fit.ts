@@ -74,47 +74,60 @@ export function fitCamera(input: FitInput): FitResult | null {
   right.normalize();
   const up = new Vector3().crossVectors(d, right).normalize();
 
-  const min = new Vector3(Infinity, Infinity, Infinity);
-  const max = new Vector3(-Infinity, -Infinity, -Infinity);
-  for (const set of input.points) {
-    for (let i = 0; i + 2 < set.length; i += 3) {
-      const x = set[i];
-      const y = set[i + 1];
-      const z = set[i + 2];
-      if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) continue;
-      min.set(Math.min(min.x, x), Math.min(min.y, y), Math.min(min.z, z));
-      max.set(Math.max(max.x, x), Math.max(max.y, y), Math.max(max.z, z));
-    }
-  }
-  if (min.x > max.x) return null;
-  const center = min.clone().add(max).multiplyScalar(0.5);
-  const size = Math.max(max.x - min.x, max.y - min.y, max.z - min.z, 1e-9);
-
   const free = input.free ?? WHOLE_CANVAS;
   const ty = Math.tan(((input.fov / 2) * Math.PI) / 180);
   const tx = ty * input.aspect;
   // The free rectangle in NDC (y up): its centre and half-sizes.
   const ox = free.x0 + free.x1 - 1;
   const oy = 1 - (free.y0 + free.y1);
-  const hx = Math.max((free.x1 - free.x0) * FIT_FILL, 1e-3);
-  const hy = Math.max((free.y1 - free.y0) * FIT_FILL, 1e-3);
+  const kx = 1 / (Math.max((free.x1 - free.x0) * FIT_FILL, 1e-3) * tx);
+  const ky = 1 / (Math.max((free.y1 - free.y0) * FIT_FILL, 1e-3) * ty);
 
-  let distance = 0;
-  const p = new Vector3();
+  // One pass over the points, in plain numbers (a level of a million points is framed within a frame): the box,
+  // and the largest of z ± kx·x and of z ± ky·y (x, y, z along right, up and d). These are linear, so measured
+  // from the box's centre C each is the same less its value at C.
+  let [x0, y0, z0, x1, y1, z1] = [Infinity, Infinity, Infinity, -Infinity, -Infinity, -Infinity];
+  let [left, rightmost, bottom, top] = [-Infinity, -Infinity, -Infinity, -Infinity];
+  const [rx, ry, rz, ux, uy, uz, dx, dy, dz] = [right.x, right.y, right.z, up.x, up.y, up.z, d.x, d.y, d.z];
   for (const set of input.points) {
     for (let i = 0; i + 2 < set.length; i += 3) {
-      p.set(set[i], set[i + 1], set[i + 2]).sub(center);
-      if (!Number.isFinite(p.x + p.y + p.z)) continue;
-      const x = p.dot(right);
-      const y = p.dot(up);
-      const z = p.dot(d);
-      distance = Math.max(distance, z + Math.abs(x) / (hx * tx), z + Math.abs(y) / (hy * ty));
+      const px = set[i];
+      const py = set[i + 1];
+      const pz = set[i + 2];
+      if (!Number.isFinite(px + py + pz)) continue;
+      if (px < x0) x0 = px;
+      if (px > x1) x1 = px;
+      if (py < y0) y0 = py;
+      if (py > y1) y1 = py;
+      if (pz < z0) z0 = pz;
+      if (pz > z1) z1 = pz;
+      const x = kx * (px * rx + py * ry + pz * rz);
+      const y = ky * (px * ux + py * uy + pz * uz);
+      const z = px * dx + py * dy + pz * dz;
+      if (z - x > left) left = z - x;
+      if (z + x > rightmost) rightmost = z + x;
+      if (z - y > bottom) bottom = z - y;
+      if (z + y > top) top = z + y;
     }
   }
-  // Never inside the model, however flat it is seen.
-  distance = Math.max(distance, size * 0.05);
+  if (x0 > x1) return null;
+  const min = new Vector3(x0, y0, z0);
+  const max = new Vector3(x1, y1, z1);
+  const center = min.clone().add(max).multiplyScalar(0.5);
+  const size = Math.max(x1 - x0, y1 - y0, z1 - z0, 1e-9);
+  const xc = kx * center.dot(right);
+  const yc = ky * center.dot(up);
+  const zc = center.dot(d);
+  const distance = Math.max(0, left - (zc - xc), rightmost - (zc + xc), bottom - (zc - yc), top - (zc + yc));
   const radius = max.distanceTo(min) / 2;
-  return { position: center.clone().addScaledVector(d, distance), target: center, up, offset: [ox, oy], radius };
+  return {
+    // Never inside the model, however flat it is seen.
+    position: center.clone().addScaledVector(d, Math.max(distance, size * 0.05)),
+    target: center,
+    up,
+    offset: [ox, oy],
+    radius,
+  };
 }
 
 /**

@@ -20,6 +20,7 @@ import {
 } from 'three';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import { INFINITELY_SHARP, type MeshTags, type RenderBuffers } from '../core/mesh';
+import { setVertexAttribute, valuesOf, vertexAttribute } from './parted-attribute';
 
 /**
  * Bytes of index one draw call takes at most: a larger surface or edge
@@ -180,18 +181,18 @@ export class LevelGraphics {
     tags: MeshTags | null = null,
   ) {
     this.side = orientation > 0 ? FrontSide : orientation < 0 ? BackSide : DoubleSide;
-    const position = new BufferAttribute(buffers.positions, 3);
+    const position = vertexAttribute(buffers.positions, 3);
     this.surface = new BufferGeometry();
-    this.surface.setAttribute('position', position);
+    setVertexAttribute(this.surface, 'position', position);
     this.surface.setIndex(new BufferAttribute(buffers.triangles, 1));
-    this.surface.setAttribute('normal', new BufferAttribute(buffers.normals, 3));
+    setVertexAttribute(this.surface, 'normal', vertexAttribute(buffers.normals, 3));
     // The core's sphere: three would otherwise walk every vertex on the main thread, once per geometry.
     const [x, y, z, r] = buffers.boundingSphere;
     const sphere = new Sphere(new Vector3(x, y, z), r);
     this.surface.boundingSphere = sphere;
 
     this.edges = new BufferGeometry();
-    this.edges.setAttribute('position', position);
+    setVertexAttribute(this.edges, 'position', position);
     this.edges.setIndex(new BufferAttribute(buffers.edges, 1));
     this.edges.boundingSphere = sphere.clone();
     // Whole triangles and whole segments per part.
@@ -202,7 +203,7 @@ export class LevelGraphics {
     this.curves = null;
     if (controlEdges.length > 0) {
       this.curves = new BufferGeometry();
-      this.curves.setAttribute('position', position);
+      setVertexAttribute(this.curves, 'position', position);
       this.curves.setIndex(new BufferAttribute(controlEdges, 1));
       this.curves.boundingSphere = sphere.clone();
     }
@@ -236,17 +237,46 @@ export class LevelGraphics {
    */
   setColors(rgb: Float32Array | null): void {
     // One attribute shared by the surface and its parts, refilled when it fits.
-    const color = this.surface.getAttribute('color') as BufferAttribute | undefined;
-    if (rgb && color && color.array.length === rgb.length) {
-      (color.array as Float32Array).set(rgb);
+    const color = this.surface.getAttribute('color');
+    if (rgb && color && valuesOf(color).length === rgb.length) {
+      valuesOf(color).set(rgb);
       color.needsUpdate = true;
       return;
     }
-    const attribute = rgb ? new BufferAttribute(rgb, 3) : null;
+    const attribute = rgb ? vertexAttribute(rgb, 3) : null;
     for (const geometry of new Set([this.surface, ...this.surfaceParts])) {
-      if (attribute) geometry.setAttribute('color', attribute);
+      if (attribute) setVertexAttribute(geometry, 'color', attribute);
       else geometry.deleteAttribute('color');
     }
+  }
+
+  /** The level's points as drawn (x y z a vertex): change them in place, then call {@link pointsMoved}. */
+  get points(): Float32Array {
+    return valuesOf(this.surface.getAttribute('position'));
+  }
+
+  /** The surface's unit vertex normals (x y z a vertex). */
+  get normals(): Float32Array {
+    return valuesOf(this.surface.getAttribute('normal'));
+  }
+
+  /**
+   * Redraws {@link points} after they changed, shaded with `normals` (x y z
+   * a vertex), or with the normals of the drawn triangles (null: three's
+   * computeVertexNormals, area-weighted, as the core's).
+   */
+  pointsMoved(normals: Float32Array | null): void {
+    if (normals) this.normals.set(normals);
+    else {
+      // On plain attributes over the same arrays: three reads and writes a parted attribute's values as numbers.
+      const scratch = new BufferGeometry();
+      scratch.setAttribute('position', new BufferAttribute(this.points, 3));
+      scratch.setAttribute('normal', new BufferAttribute(this.normals, 3));
+      scratch.setIndex(this.surface.index);
+      scratch.computeVertexNormals();
+    }
+    this.surface.getAttribute('position').needsUpdate = true;
+    this.surface.getAttribute('normal').needsUpdate = true;
   }
 
   /** Bounding sphere of the surface. */

@@ -33,7 +33,7 @@ export function pickElement(
   height: number,
   edges: boolean,
 ): Pick | null {
-  const positions = level.surface.getAttribute('position').array as Float32Array;
+  const positions = level.points;
   const segments = edges ? (level.edges.index?.array ?? new Uint32Array(0)) : new Uint32Array(0);
   const count = positions.length / 3;
   // Each vertex on screen (NaN behind the camera).
@@ -106,7 +106,7 @@ export function screenPointOf(
   width: number,
   height: number,
 ): { x: number; y: number } | null {
-  const positions = level.surface.getAttribute('position').array as Float32Array;
+  const positions = level.points;
   return onScreen(new Vector3().fromArray(positions, 3 * v), camera, width, height);
 }
 

@@ -339,11 +339,12 @@ export class SceneView {
    */
   fit(view?: { direction: readonly number[]; up: readonly number[] }, also: readonly ArrayLike<number>[] = []): void {
     const points: ArrayLike<number>[] = [...also];
-    if (this.shown) points.push(this.shown.surface.getAttribute('position').array);
-    if (this.control && this.lines.control.visible) points.push(this.control.surface.getAttribute('position').array);
+    if (this.shown) points.push(this.shown.points);
+    if (this.control && this.control !== this.shown && this.lines.control.visible) points.push(this.control.points);
     if (this.extras) {
       const box = new Box3().setFromObject(this.extras);
-      if (!box.isEmpty()) points.push([...box.min.toArray(), ...box.max.toArray()]);
+      // As the level's, a Float32Array: one kind of array keeps fitCamera's loops fast.
+      if (!box.isEmpty()) points.push(new Float32Array([...box.min.toArray(), ...box.max.toArray()]));
     }
     const direction = view ? new Vector3().fromArray(view.direction) : DEFAULT_VIEW_DIRECTION.clone();
     const up = new Vector3().fromArray(view?.up ?? [0, 1, 0]);

@@ -24,6 +24,7 @@ import {
   Sphere,
   WebGLRenderer,
 } from 'three';
+import { PartedAttribute } from './parted-attribute';
 
 type Attribute = BufferAttribute | InterleavedBufferAttribute;
 
@@ -37,6 +38,9 @@ type Attribute = BufferAttribute | InterleavedBufferAttribute;
  * where 4 MB ones stay under 50.
  */
 export const UPLOAD_BYTES_PER_FRAME = 4 * 1024 * 1024;
+
+/** Milliseconds a view waits for the GPU to take a frame's uploads before it sends more or draws anyway. */
+const FENCE_PATIENCE_MS = 5000;
 
 /**
  * Whether WebGL draws on the CPU (SwiftShader, llvmpipe: a machine or VM
@@ -62,6 +66,10 @@ export class SharedRenderer {
   private readonly views = new Set<() => void>();
   /** Attributes {@link upload} has sent to the GPU (or let the next draw send), until their geometry is disposed. */
   private onGpu = new WeakSet<Attribute>();
+  /** The fence after the last frame's uploads, until the GPU has passed it. */
+  private pendingFence: { sync: WebGLSync | null; since: number } | null = null;
+  /** Parted attributes with a buffer, until their geometry is disposed. */
+  private readonly parted = new Set<PartedAttribute>();
   /** Geometries whose disposal {@link upload} listens to. */
   private readonly watched = new WeakSet<BufferGeometry>();
   /** Draws nothing: its one object only makes three.js upload a buffer. */
@@ -75,6 +83,10 @@ export class SharedRenderer {
     // three.js rebuilds its GPU state when a lost context comes back; the views then draw again.
     this.renderer.domElement.addEventListener('webglcontextrestored', () => {
       this.onGpu = new WeakSet();
+      this.pendingFence = null;
+      // Their buffers went with the context: made and filled again before the next draw.
+      for (const attribute of this.parted) forgetBuffer(attribute);
+      this.parted.clear();
       for (const redraw of this.views) redraw();
     });
     // No bounding sphere (a pass over every vertex): the mesh draws nothing anyway.
@@ -113,6 +125,7 @@ export class SharedRenderer {
     background: string | null,
   ): void {
     this.reserve(width, height);
+    this.complete(scene);
     const r = this.renderer;
     r.setViewport(0, 0, width, height);
     r.setScissor(0, 0, width, height);
@@ -126,35 +139,121 @@ export class SharedRenderer {
   /**
    * Spreads the upload of `geometries` (what a view is about to draw) over
    * animation frames: when what is not yet on the GPU exceeds
-   * {@link UPLOAD_BYTES_PER_FRAME}, sends whole buffers up to about that
-   * many bytes and returns true (the view draws in a later frame); returns
-   * false when the draw may go ahead, sending the rest itself.
+   * {@link UPLOAD_BYTES_PER_FRAME}, sends whole buffers and parts of
+   * {@link PartedAttribute}s up to about that many bytes and returns true
+   * (the view draws in a later frame); returns false when the draw may go
+   * ahead, sending the rest itself.
    */
   upload(geometries: readonly BufferGeometry[]): boolean {
-    const pending: { attribute: Attribute; index: boolean }[] = [];
+    if (this.gpuBusy()) return true;
+    const pending: { attribute: Attribute | PartedAttribute; index: boolean }[] = [];
     let total = 0;
     for (const geometry of geometries) {
       const attributes = [...Object.values(geometry.attributes)].map((attribute) => ({ attribute, index: false }));
       if (geometry.index) attributes.push({ attribute: geometry.index, index: true });
       for (const entry of attributes) {
-        if (this.onGpu.has(entry.attribute) || pending.some((p) => p.attribute === entry.attribute)) continue;
-        pending.push(entry);
-        total += bytesOf(entry.attribute);
+        const attribute = entry.attribute as Attribute | PartedAttribute;
+        if (pending.some((p) => p.attribute === attribute)) continue;
+        if (attribute instanceof PartedAttribute) {
+          if (attribute.complete) continue;
+          total += attribute.array.byteLength - attribute.sent;
+        } else {
+          if (this.onGpu.has(attribute)) continue;
+          total += bytesOf(attribute);
+        }
+        pending.push({ attribute, index: entry.index });
       }
       this.watch(geometry);
     }
-    for (const { attribute } of pending) this.onGpu.add(attribute);
-    if (total <= UPLOAD_BYTES_PER_FRAME) return false;
-    let sent = 0;
-    for (const [i, entry] of pending.entries()) {
-      if (sent > 0 && sent + bytesOf(entry.attribute) > UPLOAD_BYTES_PER_FRAME) {
-        for (const rest of pending.slice(i)) this.onGpu.delete(rest.attribute);
-        break;
+    const budget = total <= UPLOAD_BYTES_PER_FRAME ? Number.POSITIVE_INFINITY : UPLOAD_BYTES_PER_FRAME;
+    let left = budget;
+    for (const { attribute, index } of pending) {
+      if (left <= 0) break;
+      if (attribute instanceof PartedAttribute) {
+        left -= this.fill(attribute, left);
+        continue;
       }
-      this.send(entry.attribute, entry.index);
-      sent += bytesOf(entry.attribute);
+      // Within the budget, the draw sends it.
+      if (budget === Number.POSITIVE_INFINITY) {
+        this.onGpu.add(attribute);
+        continue;
+      }
+      const bytes = bytesOf(attribute);
+      if (left < budget && bytes > left) break;
+      this.send(attribute, index);
+      this.onGpu.add(attribute);
+      left -= bytes;
     }
+    if (budget === Number.POSITIVE_INFINITY) return false;
+    this.fence();
     return true;
+  }
+
+  /**
+   * Marks the end of a frame's uploads: the next frame sends nothing until
+   * the GPU has taken them (WebGL 2's fence, asked without waiting). The
+   * GPU process works through a frame's bytes at its own pace (a few
+   * milliseconds a megabyte when idle, ten times that on a loaded machine,
+   * and a new buffer of 200 MB is cleared first, 0.1–0.5 s); a call that
+   * finds its transfer space still full holds the page until it is free.
+   */
+  private fence(): void {
+    const gl = this.renderer.getContext();
+    if (!(gl instanceof WebGL2RenderingContext)) return;
+    this.pendingFence = { sync: gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0), since: performance.now() };
+    // Sends the fence with the frame's commands (otherwise it waits for the next flush).
+    gl.flush();
+  }
+
+  /** Whether the GPU has not yet taken the last frame's uploads (given up after {@link FENCE_PATIENCE_MS}). */
+  private gpuBusy(): boolean {
+    const fence = this.pendingFence;
+    if (!fence) return false;
+    const gl = this.renderer.getContext() as WebGL2RenderingContext;
+    const signaled = fence.sync !== null && gl.getSyncParameter(fence.sync, gl.SYNC_STATUS) === gl.SIGNALED;
+    // A lost context never signals: draw anyway after a while.
+    if (!signaled && performance.now() - fence.since < FENCE_PATIENCE_MS) return true;
+    gl.deleteSync(fence.sync);
+    this.pendingFence = null;
+    return false;
+  }
+
+  /**
+   * Sends up to `bytes` more of `attribute` (all of it when infinite),
+   * making its buffer at its full size first; returns the bytes sent.
+   */
+  private fill(attribute: PartedAttribute, bytes: number): number {
+    const gl = this.renderer.getContext();
+    const array = attribute.array;
+    if (attribute.buffer === null) {
+      attribute.buffer = gl.createBuffer();
+      attribute.sent = 0;
+      // Tells three the buffer changed (it keeps a GLBufferAttribute's buffer by version).
+      attribute.version++;
+      gl.bindBuffer(gl.ARRAY_BUFFER, attribute.buffer);
+      gl.bufferData(gl.ARRAY_BUFFER, array.byteLength, gl.STATIC_DRAW);
+      this.parted.add(attribute);
+    } else gl.bindBuffer(gl.ARRAY_BUFFER, attribute.buffer);
+    const start = attribute.sent;
+    const end = Math.min(array.byteLength, start + Math.max(4, Math.floor(bytes / 4) * 4));
+    gl.bufferSubData(gl.ARRAY_BUFFER, start, array.subarray(start / 4, end / 4));
+    // Vertex array objects keep their own bindings: unbinding the array buffer changes no draw.
+    gl.bindBuffer(gl.ARRAY_BUFFER, null);
+    attribute.sent = end;
+    return end - start;
+  }
+
+  /** Sends what is missing of the parted attributes `scene` draws (a draw that no upload spread). */
+  private complete(scene: Scene): void {
+    scene.traverseVisible((object) => {
+      const geometry = (object as Partial<Mesh>).geometry;
+      if (!geometry) return;
+      for (const attribute of Object.values(geometry.attributes) as unknown[]) {
+        if (!(attribute instanceof PartedAttribute) || attribute.complete) continue;
+        this.fill(attribute, Number.POSITIVE_INFINITY);
+        this.watch(geometry);
+      }
+    });
   }
 
   /** Makes three.js upload one buffer: an object drawing nothing (draw range 0) whose geometry holds it. */
@@ -184,7 +283,14 @@ export class SharedRenderer {
     this.watched.add(geometry);
     const forget = () => {
       if (geometry.index) this.onGpu.delete(geometry.index);
-      for (const attribute of Object.values(geometry.attributes)) this.onGpu.delete(attribute);
+      for (const attribute of Object.values(geometry.attributes) as (Attribute | PartedAttribute)[]) {
+        if (!(attribute instanceof PartedAttribute)) this.onGpu.delete(attribute);
+        else if (this.parted.delete(attribute)) {
+          // three frees the buffer of an attribute it has drawn, not of one only sent.
+          this.renderer.getContext().deleteBuffer(attribute.buffer);
+          forgetBuffer(attribute);
+        }
+      }
       this.watched.delete(geometry);
       geometry.removeEventListener('dispose', forget);
     };
@@ -212,6 +318,12 @@ export class SharedRenderer {
     const { geometries, textures } = this.renderer.info.memory;
     return { geometries, textures };
   }
+}
+
+/** Leaves `attribute` without a buffer: the next upload or draw makes one and sends it all again. */
+function forgetBuffer(attribute: PartedAttribute): void {
+  attribute.buffer = null as unknown as WebGLBuffer;
+  attribute.sent = 0;
 }
 
 function bytesOf(attribute: Attribute): number {

@@ -81,7 +81,7 @@ export class ViewLines {
   edgeOpacity(level: LevelGraphics, camera: PerspectiveCamera, distance: number, heightPx: number): number {
     let mean = this.meanEdge.get(level);
     if (mean === undefined) {
-      mean = meanSegmentLength(level.surface.getAttribute('position').array, level.edges.index?.array ?? []);
+      mean = meanSegmentLength(level.points, level.edges.index?.array ?? []);
       this.meanEdge.set(level, mean);
     }
     return edgeOpacity(projectedLength(mean, distance, camera, heightPx), this.width);

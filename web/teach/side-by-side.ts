@@ -109,6 +109,8 @@ export class SideBySide {
   private message = '';
   /** The control mesh the panes show (the first pane's). */
   private model: Mesh | null = null;
+  /** Whether {@link model} has faces other than triangles (worked out once a model: state is read on every change). */
+  private polygons = false;
   /** A camera change is being passed on: the panes it reaches do not pass it back. */
   private linking = false;
   /** Counts measurements, so that a late one for levels no longer shown is dropped. */
@@ -133,7 +135,7 @@ export class SideBySide {
     const main = this.main.state;
     const tags = this.model?.tags;
     const tagged = (tags?.creaseSharpness.length ?? 0) + (tags?.cornerSharpness.length ?? 0) > 0;
-    const polygons = this.model?.faceSizes.some((n) => n !== 3) ?? false;
+    const polygons = this.polygons;
     const pane = (scheme: SchemeName, viewer: ViewerState, message: string): PaneState => ({
       scheme,
       triangulated: polygons && schemeInfo(scheme).needsTriangles,
@@ -331,6 +333,7 @@ export class SideBySide {
     const model = this.main.controlMesh;
     if (model !== this.model) {
       this.model = model;
+      this.polygons = model !== null && !allTriangles(model.faceSizes);
       this.distance = null;
       this.coloured = [];
       if (model) for (const pane of this.extra) void this.loadInto(pane, model);
@@ -515,4 +518,10 @@ function idle(viewer: SubdivViewer): Promise<void> {
       resolve();
     });
   });
+}
+
+/** Whether every face has three corners (a loop, not some(): a million faces are read within a frame). */
+function allTriangles(faceSizes: ArrayLike<number>): boolean {
+  for (let f = 0; f < faceSizes.length; ++f) if (faceSizes[f] !== 3) return false;
+  return true;
 }

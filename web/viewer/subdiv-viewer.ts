@@ -11,7 +11,6 @@
  * DOM outside its container, so an app shell or an embed adds the panels.
  */
 
-import type { BufferAttribute } from 'three';
 import type { MeshComparison } from '../core/compare';
 import type { VertexCurvature } from '../core/curvature';
 import type { HalfedgeTable } from '../core/halfedges';
@@ -568,7 +567,7 @@ export class SubdivViewer {
     if (!level?.graphics) return;
     const others = also.flatMap((v) => {
       const graphics = v.levels[v.current]?.graphics;
-      return graphics ? [graphics.surface.getAttribute('position').array] : [];
+      return graphics ? [graphics.points] : [];
     });
     this.view.fit(
       view === 'current' ? this.view.lookDirection() : CANONICAL_VIEWS.find((v) => v.name === view),
@@ -738,20 +737,17 @@ export class SubdivViewer {
   setSplitBlend(split: Float32Array, t: number): void {
     const level = this.levels[this.current];
     if (!level) return;
-    const surface = this.graphicsOf(level).surface;
-    const position = surface.getAttribute('position') as BufferAttribute;
-    const normal = surface.getAttribute('normal') as BufferAttribute;
-    const drawn = position.array as Float32Array;
+    const graphics = this.graphicsOf(level);
+    const drawn = graphics.points;
     if (split.length !== drawn.length) return;
     if (this.blend?.level !== level) {
       this.endSplitBlend();
-      this.blend = { level, own: Float32Array.from(drawn), normals: Float32Array.from(normal.array) };
+      this.blend = { level, own: Float32Array.from(drawn), normals: Float32Array.from(graphics.normals) };
     }
     const own = this.blend.own;
     for (let i = 0; i < drawn.length; ++i) drawn[i] = split[i] + t * (own[i] - split[i]);
-    position.needsUpdate = true;
-    // Shaded as the blended surface is (three's normals of the drawn triangles), not as the smoothed one.
-    surface.computeVertexNormals();
+    // Shaded as the blended surface is (the normals of the drawn triangles), not as the smoothed one.
+    graphics.pointsMoved(null);
     this.view.requestRender();
     if (t === 1) this.endSplitBlend();
   }
@@ -762,12 +758,8 @@ export class SubdivViewer {
     const { level, own, normals } = this.blend;
     this.blend = null;
     if (!level.graphics) return;
-    const position = level.graphics.surface.getAttribute('position') as BufferAttribute;
-    const normal = level.graphics.surface.getAttribute('normal') as BufferAttribute;
-    (position.array as Float32Array).set(own);
-    (normal.array as Float32Array).set(normals);
-    position.needsUpdate = true;
-    normal.needsUpdate = true;
+    level.graphics.points.set(own);
+    level.graphics.pointsMoved(normals);
     this.view.requestRender();
   }
 
