@@ -54,7 +54,7 @@ Mesh load(const std::string& name, bool triangulate) {
   return m;
 }
 
-/// One CGAL step of a primal scheme, as subdivide.cpp's CGAL path runs it.
+/// One CGAL step of a primal scheme, as cgal_driver.cpp runs it.
 void cgal_step(const std::string& scheme, const Custom_rules& rules, Mesh& m) {
   const auto one = CGAL::parameters::number_of_iterations(1);
   if (scheme == "catmull-clark") SM3::CatmullClark_subdivision(m, one);

@@ -202,7 +202,7 @@ void custom_subdivision_step(Mesh& mesh, const Custom_rules& rules,
   } else if (rules.host == "ptq") {
     SMI::PTQ_1step(mesh, vpm, Table_PTQ_mask_3<Mesh>(&mesh, vpm, &rules));
   } else if (rules.host == "dqq") {
-    // As subdivide.cpp's doo-sabin: CGAL's DQQ host on closed meshes, the
+    // As cgal_driver.cpp's doo-sabin: CGAL's DQQ host on closed meshes, the
     // border-aware one of dqq_border_3.h on open ones.
     if (CGAL::is_closed(mesh))
       SMI::DQQ_1step(mesh, vpm, Table_DQQ_mask_3<Mesh>(&mesh, vpm, &rules));
@@ -211,7 +211,7 @@ void custom_subdivision_step(Mesh& mesh, const Custom_rules& rules,
                                  Table_DQQ_mask_3<Mesh>(&mesh, vpm, &rules));
   } else if (rules.host == "sqrt3") {
     // CGAL refines the border on every second step; level_index carries the
-    // parity across calls, as subdivide.cpp does for sqrt3.
+    // parity across calls, as cgal_driver.cpp does for sqrt3.
     SMI::Sqrt3_1step(mesh, vpm, Table_Sqrt3_mask_3<Mesh>(&mesh, vpm, &rules),
                      level_index % 2 == 1);
   }

@@ -1,6 +1,6 @@
 // The stencils of a step: each refined vertex as a weighted sum of the
 // vertices of the level before, for the stencil inspector (issue 9) and
-// `subdiv stencil`. Owner: stencils.cpp (the probing), subdivide.cpp (the
+// `subdiv stencil`. Owner: stencils.cpp (the probing), fast_driver.cpp (the
 // run that calls it).
 //
 // The weights are not derived again from the schemes' formulas: every

@@ -1,4 +1,6 @@
-// The subdivision schemes. Owner: subdivide.cpp (+ the host/mask headers).
+// The subdivision schemes. Owner: subdivide.cpp (the dispatch and size
+// predictions; its routes in fast_driver.cpp and cgal_driver.cpp, their
+// shared checks in subdivide_prepare.cpp; + the host/mask headers).
 #pragma once
 
 #include <cstddef>

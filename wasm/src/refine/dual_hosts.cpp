@@ -5,7 +5,7 @@
 // f, E-face e, V-face v: the faces Doo-Sabin builds per face, edge, vertex.
 //
 // Closed: CGAL 5.5's DQQ_1step (Subdivision_method_3/internal/
-// subdivision_hosts_impl_3.h), then collect_garbage (subdivide.cpp's
+// subdivision_hosts_impl_3.h), then collect_garbage (subdivide_prepare's
 // collect_removed). Slots before the garbage is collected:
 //   vertices  per vertex, per corner c_j: insert_vertex adds V + o_v + j
 //             (the corner's point) and spoke edge E + 2 o_v + j; then, for
