@@ -19,7 +19,6 @@ export const PARTED_ATTRIBUTE_BYTES = 4 * 1024 * 1024;
 const GL_FLOAT = 0x1406;
 
 export class PartedAttribute extends GLBufferAttribute {
-  readonly isPartedAttribute = true;
   /** The values, as the CPU keeps them. */
   readonly array: Float32Array;
   /** Bytes of {@link array} on the GPU, from the start (the buffer is complete at array.byteLength). */
