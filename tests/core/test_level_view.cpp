@@ -102,6 +102,25 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted_pairs(
   return pairs;
 }
 
+/// The edges of `edges` that one corner of `m` only goes along, in the
+/// order of `edges`: its border, counted by a map.
+std::vector<std::uint32_t> border_by_map(
+    const Mesh_buffers& m, const std::vector<std::uint32_t>& edges) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> corners;
+  std::size_t at = 0;
+  for (std::uint32_t size : m.face_sizes) {
+    for (std::uint32_t k = 0; k < size; ++k)
+      ++corners[std::minmax(m.face_indices[at + k],
+                            m.face_indices[at + (k + 1) % size])];
+    at += size;
+  }
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < edges.size(); i += 2)
+    if (corners.at({edges[i], edges[i + 1]}) == 1)
+      out.insert(out.end(), {edges[i], edges[i + 1]});
+  return out;
+}
+
 /// The edges of the corners a -> b with a < b, in corner order.
 std::vector<std::uint32_t> edges_going_up(const Mesh_buffers& m) {
   std::vector<std::uint32_t> out;
@@ -279,12 +298,14 @@ TEST(RenderBuffers, EdgesAndNormalsEqualPlainOnesOnFixturesAndTheirLevels) {
     for (const Mesh_buffers* m : {&base, &refined.value}) {
       const Render_buffers r = render_buffers(*m);
       EXPECT_EQ(r.edges, edges_by_map(*m));
+      EXPECT_EQ(r.border_edges, border_by_map(*m, r.edges));
       // Told its number of edges, a closed mesh lists them in one pass:
       // the same set, in the order of the corners going up.
       Recorder told;
       const std::size_t edges = r.edges.size() / 2;
       EXPECT_EQ(build_render_buffers(*m, told, edges), edges);
       EXPECT_EQ(sorted_pairs(told.out.edges), sorted_pairs(r.edges));
+      EXPECT_EQ(told.out.border_edges, border_by_map(*m, told.out.edges));
       if (compute_facts(*m).value.closed)
         EXPECT_EQ(told.out.edges, edges_going_up(*m));
       const std::vector<double> n = normals_by_fan(*m);

@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <utility>
+#include <vector>
 
 #include "core/mesh_build.h"
 #include "core/mesh_check.h"
+#include "core/render_buffers.h"
 #include "core/subdivide.h"
 #include "fuzz_targets.h"
 
@@ -78,6 +81,84 @@ bool read_any(std::string_view bytes, Mesh_buffers& mesh) {
   return true;
 }
 
+namespace {
+
+using Edge = std::pair<std::uint32_t, std::uint32_t>;
+
+/// Keeps the edges and the border a sink is handed.
+struct Edge_sink : Render_sink {
+  std::vector<std::uint32_t> edges, border;
+  void floats(Render_array, const std::vector<float>&) override {}
+  void indices(Render_array which,
+               const std::vector<std::uint32_t>& v) override {
+    if (which == Render_array::edges) edges = v;
+    if (which == Render_array::border_edges) border = v;
+  }
+};
+
+/// The edges of `edges` (pairs, smaller vertex first) that one corner goes
+/// along, in the order of `edges`.
+std::vector<std::uint32_t> border_of(const std::vector<std::uint32_t>& edges,
+                                     const std::map<Edge, int>& corners) {
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {
+    const auto at = corners.find({edges[i], edges[i + 1]});
+    if (at != corners.end() && at->second == 1)
+      out.insert(out.end(), {edges[i], edges[i + 1]});
+  }
+  return out;
+}
+
+/// The render arrays of a valid mesh, against a map of its corners: the
+/// fan of the faces drawn (holes are not), their edges once each, smaller
+/// vertex first, and among those the edges one corner of the whole mesh
+/// goes along, in edge order; told the number of edges (as a step's view
+/// is), the same edges and border.
+void require_render_buffers(const Mesh_buffers& mesh, const std::string& w) {
+  std::vector<std::uint8_t> hole(mesh.face_count(), 0);
+  for (const std::uint32_t f : mesh.tags.holes)
+    if (f < hole.size()) hole[f] = 1;
+  std::map<Edge, int> corners;
+  std::set<Edge> shown;
+  std::vector<std::uint32_t> fan_face;
+  std::size_t at = 0;
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+    const std::uint32_t k = mesh.face_sizes[f];
+    for (std::uint32_t c = 0; c < k; ++c) {
+      const Edge e = std::minmax(mesh.face_indices[at + c],
+                                 mesh.face_indices[at + (c + 1) % k]);
+      ++corners[e];
+      if (!hole[f]) shown.insert(e);
+    }
+    if (!hole[f]) fan_face.insert(fan_face.end(), k - 2, f);
+    at += k;
+  }
+  const Render_buffers r = render_buffers(mesh);
+  std::set<Edge> drawn;
+  for (std::size_t i = 0; i + 1 < r.edges.size(); i += 2)
+    drawn.emplace(r.edges[i], r.edges[i + 1]);
+  require(r.edges.size() == 2 * shown.size() && drawn == shown,
+          "the render edges are not the drawn faces' edges, once each", w);
+  require(r.border_edges == border_of(r.edges, corners),
+          "the render border is not the edges of one corner, in edge order", w);
+  require(
+      r.triangle_face == fan_face && r.triangles.size() == 3 * fan_face.size(),
+      "the render fan is not k - 2 triangles per face drawn", w);
+  for (const std::uint32_t v : r.triangles)
+    require(v < mesh.vertex_count(), "a render triangle names no vertex", w);
+  Edge_sink told;
+  require(build_render_buffers(mesh, told, corners.size()) == corners.size(),
+          "build_render_buffers told the edges counts others", w);
+  std::set<Edge> told_drawn;
+  for (std::size_t i = 0; i + 1 < told.edges.size(); i += 2)
+    told_drawn.emplace(told.edges[i], told.edges[i + 1]);
+  require(told.edges.size() == r.edges.size() && told_drawn == shown &&
+              told.border == border_of(told.edges, corners),
+          "told the number of edges, other render edges or border", w);
+}
+
+}  // namespace
+
 void require_valid_mesh(const Mesh_buffers& mesh, const char* what) {
   const std::string w = what;
   for (const double x : mesh.positions)
@@ -95,6 +176,7 @@ void require_valid_mesh(const Mesh_buffers& mesh, const char* what) {
   require(s.ok(), "build_mesh refuses", w + ": " + s.message);
   require(CGAL::is_valid_polygon_mesh(built), "not a valid polygon mesh", w);
   require(built.number_of_faces() == mesh.face_count(), "faces lost", w);
+  require_render_buffers(mesh, w);
 }
 
 namespace {

@@ -60,7 +60,8 @@ bool read_any(std::string_view bytes, Mesh_buffers& mesh);
 
 /// What a valid mesh from the core must be: the checks pass (check_buffers,
 /// check_writable), build_mesh builds it, CGAL finds it a valid polygon
-/// mesh, every coordinate finite and every vertex used.
+/// mesh, every coordinate finite and every vertex used; its render arrays
+/// (render_buffers.h) are those of its faces, checked against a map.
 void require_valid_mesh(const Mesh_buffers& mesh, const char* what);
 
 /// Results of two runs that should agree: same faces and control edges (as

@@ -160,13 +160,21 @@ bool edges_going_up(const Faces& faces, std::size_t expected,
   return true;
 }
 
+/// Marks, in polygon_edges' buckets, an edge that a second corner goes
+/// along: with a border to list, vertex indices must stay below it.
+constexpr std::uint32_t kPaired = 0x80000000u;
+
 /// Every polygon edge once, bucketed by its smaller vertex: the larger
 /// end of each corner's edge goes to the bucket of the smaller (a counting
-/// sort, corner order kept in each bucket); a stamp per vertex says whether
-/// it was seen in the bucket at hand, so that a vertex of any valence costs
-/// one pass. Returns the number of edges.
+/// sort, corner order kept in each bucket); a stamp per vertex says where in
+/// the bucket at hand it was first seen, so that a vertex of any valence
+/// costs one pass. Returns the number of edges. With `border`, also lists
+/// there the edges that one corner only goes along (those met once in
+/// their bucket), in the order of `out`: the border falls out of the same
+/// sort. A border is listed for fewer than kPaired vertices only.
 std::size_t polygon_edges(std::size_t n, const Faces& faces,
-                          std::vector<std::uint32_t>& out) {
+                          std::vector<std::uint32_t>& out,
+                          std::vector<std::uint32_t>* border = nullptr) {
   // Calls visit(lo, hi) for the edge from each corner to the next.
   const auto each_corner_edge = [&faces](auto&& visit) {
     for_each_corner_edge(faces, [&visit](std::uint32_t a, std::uint32_t b) {
@@ -182,28 +190,36 @@ std::size_t polygon_edges(std::size_t n, const Faces& faces,
   each_corner_edge([&end, &larger](std::uint32_t lo, std::uint32_t hi) {
     larger[end[lo]++] = hi;
   });
-  std::vector<std::uint32_t> stamp(n, 0);
+  // seen[hi] is 1 + where hi was last met: past the bucket's start, it was
+  // met in this bucket, at seen[hi] - 1.
+  const std::uint32_t paired = border != nullptr ? kPaired : 0;
+  std::vector<std::uint32_t> seen(n, 0);
   std::size_t edges = 0;
   for (std::size_t lo = 0, i = 0; lo < n; ++lo) {
-    const std::uint32_t mark = static_cast<std::uint32_t>(lo) + 1;
+    const std::uint32_t start = static_cast<std::uint32_t>(i);
     for (; i < end[lo]; ++i) {
       const std::uint32_t hi = larger[i];
-      if (stamp[hi] == mark) {
+      if (seen[hi] > start) {
+        larger[seen[hi] - 1] |= paired;
         larger[i] = kNoEdge;
         continue;
       }
-      stamp[hi] = mark;
+      seen[hi] = static_cast<std::uint32_t>(i) + 1;
       ++edges;
     }
   }
-  std::vector<std::uint32_t>().swap(stamp);
+  std::vector<std::uint32_t>().swap(seen);
   out.resize(2 * edges);
+  if (border != nullptr) border->clear();
   std::uint32_t* e = out.data();
   for (std::size_t lo = 0, i = 0; lo < n; ++lo) {
     for (; i < end[lo]; ++i) {
       if (larger[i] == kNoEdge) continue;
+      const std::uint32_t hi = larger[i] & ~paired;
       *e++ = static_cast<std::uint32_t>(lo);
-      *e++ = larger[i];
+      *e++ = hi;
+      if (border != nullptr && (larger[i] & kPaired) == 0)
+        border->insert(border->end(), {static_cast<std::uint32_t>(lo), hi});
     }
   }
   return edges;
@@ -288,23 +304,25 @@ std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
     triangle_faces(faces, triangle_face);
     sink.indices(Render_array::triangle_face, triangle_face);
   }
-  std::vector<std::uint32_t> edges;
+  // The edges drawn, and among them those of one face of the whole mesh.
+  const std::size_t n = mesh.vertex_count();
+  std::vector<std::uint32_t> edges, border;
   std::size_t count = 0;
   if (faces.original != nullptr) {
-    count = polygon_edges(mesh.vertex_count(), all, edges);
-    polygon_edges(mesh.vertex_count(), faces, edges);
+    count = polygon_edges(n, all, edges);
+    polygon_edges(n, faces, edges);
+    border_edges(n, all, edges, border);
+  } else if (expected_edges > 0 && faces.indices.size() == 2 * expected_edges &&
+             edges_going_up(faces, expected_edges, edges)) {
+    count = expected_edges;  // closed: no border
+  } else if (n < kPaired) {
+    count = polygon_edges(n, faces, edges, &border);
   } else {
-    count = expected_edges > 0 && edges_going_up(faces, expected_edges, edges)
-                ? expected_edges
-                : polygon_edges(mesh.vertex_count(), faces, edges);
+    count = polygon_edges(n, faces, edges);
+    border_edges(n, all, edges, border);
   }
   sink.indices(Render_array::edges, edges);
-  {
-    // Of the edges drawn, those of one face of the whole mesh.
-    std::vector<std::uint32_t> border;
-    border_edges(mesh.vertex_count(), all, edges, border);
-    sink.indices(Render_array::border_edges, border);
-  }
+  sink.indices(Render_array::border_edges, border);
   return count;
 }
 
