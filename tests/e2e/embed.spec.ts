@@ -9,7 +9,7 @@ import type { AddressInfo } from 'node:net';
 import type { Locator } from '@playwright/test';
 import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
-import { expectedClosedCounts, readPng, triangulatedQuads } from './helpers';
+import { expectedClosedCounts, quadGridOff, readPng, triangulatedQuads } from './helpers';
 
 const OCTAHEDRON = { vertices: 6, edges: 12, faces: 8 };
 /** A tetrahedron as a page would hand it to load(). */
@@ -284,6 +284,60 @@ test("cancelling one viewer stops only its step; the next viewer's queued step c
     await page.evaluate(() => (document.getElementById('big') as HTMLElementTagNameMap['subdiv-viewer']).setLevel(1)),
   ).toBe(1);
   expect((await embed.reading('big')).facts?.faces).toBe(4 * 75408);
+});
+
+test('a viewer with nothing to send draws while another waits for the GPU to take its upload', async ({
+  embed,
+  page,
+}) => {
+  test.setTimeout(120_000);
+  type Viewer = HTMLElementTagNameMap['subdiv-viewer'];
+  await embed.serve(
+    'e2e/two.html',
+    viewerPage(
+      'Two',
+      `subdiv-viewer{width:320px;height:240px;display:inline-block}`,
+      `<subdiv-viewer id="big"></subdiv-viewer>
+<subdiv-viewer id="small" src="../meshes/cube.off"></subdiv-viewer>`,
+    ),
+  );
+  await page.goto('./e2e/two.html');
+  await embed.waitForLevel('small', 0);
+  // 300 × 300 quads: level 2 has 1,442,401 points (17 MB of positions, as many of normals), sent in parts.
+  await page.locator('#big').evaluate((e, text) => (e as Viewer).load(text, 'grid.off'), quadGridOff(300));
+  await embed.waitForLevel('big', 0);
+  // A GPU that never passes a fence (its transfer space full): the big level's parts stop after the first frame's.
+  await page.evaluate(() => {
+    const w = window as unknown as { fences: number; restoreSync: () => void };
+    const proto = WebGL2RenderingContext.prototype;
+    const { fenceSync, getSyncParameter } = proto;
+    w.fences = 0;
+    proto.fenceSync = function (this: WebGL2RenderingContext, condition: GLenum, flags: GLbitfield) {
+      w.fences++;
+      return fenceSync.call(this, condition, flags);
+    };
+    proto.getSyncParameter = function (this: WebGL2RenderingContext, sync: WebGLSync, pname: GLenum) {
+      return pname === this.SYNC_STATUS ? this.UNSIGNALED : getSyncParameter.call(this, sync, pname);
+    };
+    w.restoreSync = () => {
+      proto.fenceSync = fenceSync;
+      proto.getSyncParameter = getSyncParameter;
+    };
+  });
+  await page.locator('#big').evaluate((e) => {
+    void (e as Viewer).setLevel(2);
+  });
+  await embed.waitForLevel('big', 2);
+  await expect.poll(() => page.evaluate(() => (window as unknown as { fences: number }).fences)).toBeGreaterThan(0);
+  const before = await page.locator('#small').screenshot();
+  await page.locator('#small').evaluate((e) => (e as Viewer).setView('5,1,2,0,0,0,0,1,0'));
+  // Drawn within frames, not once the view gives up on the fence (5 s).
+  await expect
+    .poll(async () => (await page.locator('#small').screenshot()).equals(before), { timeout: 2500 })
+    .toBe(false);
+  await page.evaluate(() => (window as unknown as { restoreSync: () => void }).restoreSync());
+  expect((await embed.reading('big')).facts?.vertices).toBe(1_442_401);
+  expect(await embed.events('error', 'big')).toEqual([]);
 });
 
 test.describe('styled by the page', () => {

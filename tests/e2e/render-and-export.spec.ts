@@ -129,6 +129,35 @@ test('levels whose points and normals go to the GPU in parts are drawn as the le
       expect(differ).toBeLessThan(before.surface / 200);
     });
   }
+  await test.step('Split played on level 1 (parted too): the view draws the blend as it goes, not only its end', async () => {
+    await app.scrubTo(1);
+    await app.byTestId('split.t').fill('0');
+    await expect(app.byTestId('split.value')).toHaveText('0.00');
+    // The split value shown at each draw, until the play's end is drawn (points and normals
+    // change every frame: were they sent in parts, each change would start them over, and
+    // nothing be drawn until the play ends).
+    await app.page.evaluate(() => {
+      const seen: string[] = [];
+      (window as unknown as { blendDraws: string[] }).blendDraws = seen;
+      const value = document.querySelector('[data-testid="split.value"]');
+      let last = window.__subdivlab?.state().drawn?.at;
+      const timer = setInterval(() => {
+        const at = window.__subdivlab?.state().drawn?.at;
+        if (at === last) return;
+        last = at;
+        seen.push(value?.textContent ?? '');
+        if (value?.textContent === '1.00') clearInterval(timer);
+      }, 10);
+    });
+    await app.byTestId('split.play').click();
+    await expect
+      .poll(() => app.page.evaluate(() => (window as unknown as { blendDraws: string[] }).blendDraws.at(-1)), {
+        timeout: 60_000,
+      })
+      .toBe('1.00');
+    const draws = await app.page.evaluate(() => (window as unknown as { blendDraws: string[] }).blendDraws);
+    expect(draws.filter((v) => v !== '0.00' && v !== '1.00').length).toBeGreaterThanOrEqual(2);
+  });
 });
 
 test('control-edge curves: the marked edges of a refined level, drawn and exported', async ({ app }) => {

@@ -9,7 +9,12 @@ import { BufferAttribute, BufferGeometry } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { RenderBuffers } from '../../web/core/mesh';
 import { LevelGraphics } from '../../web/render/level-graphics';
-import { PARTED_ATTRIBUTE_BYTES, PartedAttribute, vertexAttribute } from '../../web/render/parted-attribute';
+import {
+  HURRY_WITHIN_MS,
+  PARTED_ATTRIBUTE_BYTES,
+  PartedAttribute,
+  vertexAttribute,
+} from '../../web/render/parted-attribute';
 
 /** A wavy sheet of `n` × 2 quads ((n + 1) · 3 vertices), fanned into triangles; normals all (0, 0, 1) until moved. */
 function wavySheet(n: number): RenderBuffers {
@@ -54,7 +59,33 @@ describe('vertexAttribute', () => {
     expect(parted.complete).toBe(true);
     const version = parted.version;
     parted.needsUpdate = true;
-    expect([parted.sent, parted.version, parted.complete]).toEqual([0, version + 1, false]);
+    expect([parted.sent, parted.version, parted.complete, parted.hurried]).toEqual([0, version + 1, false, false]);
+  });
+
+  it('changed again before its last change was all sent, it is hurried: sent whole, not in parts', () => {
+    const parted = new PartedAttribute(new Float32Array(30), 3);
+    // Without a buffer, nothing was sent yet: a change is no reason to hurry.
+    parted.needsUpdate = true;
+    expect(parted.hurried).toBe(false);
+    parted.buffer = {} as WebGLBuffer;
+    parted.sent = 120;
+    parted.needsUpdate = true;
+    expect(parted.hurried).toBe(false);
+    // Split's blend: the next frame's change comes while the first part of this one is on its way.
+    parted.sent = 48;
+    parted.needsUpdate = true;
+    expect([parted.hurried, parted.sent]).toEqual([true, 0]);
+    // Or just after all of it went (as SharedRenderer records): the next frame's change is hurried too.
+    parted.hurried = false;
+    parted.sent = 120;
+    parted.completedAt = performance.now();
+    parted.needsUpdate = true;
+    expect(parted.hurried).toBe(true);
+    parted.hurried = false;
+    parted.sent = 120;
+    parted.completedAt = performance.now() - HURRY_WITHIN_MS - 1;
+    parted.needsUpdate = true;
+    expect(parted.hurried).toBe(false);
   });
 });
 
@@ -110,11 +141,16 @@ describe('LevelGraphics with parted attributes', () => {
     const color = graphics.surface.getAttribute('color') as unknown as PartedAttribute;
     expect(color).toBeInstanceOf(PartedAttribute);
     for (const part of graphics.surfaceParts) expect(part.getAttribute('color') as unknown).toBe(color);
+    // The attribute holds a copy: the owner's colours stay as they are when the next ones are written.
+    expect(color.array).not.toBe(rgb);
     color.sent = color.array.byteLength;
     graphics.setColors(new Float32Array(rgb.length).fill(0.75));
     expect(graphics.surface.getAttribute('color') as unknown).toBe(color);
-    expect([color.array[7], color.sent]).toEqual([0.75, 0]);
+    expect([color.array[7], color.sent, rgb[7]]).toEqual([0.75, 0, 0.5]);
+    expect(color.dropped).toBe(false);
+    // Taken off: dropped, so that the shared renderer frees its buffer (the geometry lives on).
     graphics.setColors(null);
     expect(graphics.surface.getAttribute('color')).toBeUndefined();
+    expect(color.dropped).toBe(true);
   });
 });

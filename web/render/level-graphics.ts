@@ -20,7 +20,7 @@ import {
 } from 'three';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import { INFINITELY_SHARP, type MeshTags, type RenderBuffers } from '../core/mesh';
-import { setVertexAttribute, valuesOf, vertexAttribute } from './parted-attribute';
+import { PartedAttribute, setVertexAttribute, valuesOf, vertexAttribute } from './parted-attribute';
 
 /**
  * Bytes of index one draw call takes at most: a larger surface or edge
@@ -243,7 +243,9 @@ export class LevelGraphics {
       color.needsUpdate = true;
       return;
     }
-    const attribute = rgb ? vertexAttribute(rgb, 3) : null;
+    if (color instanceof PartedAttribute) color.drop();
+    // A copy: the next colours of this length are written into it, and `rgb` is its owner's (setLevelColors).
+    const attribute = rgb ? vertexAttribute(rgb.slice(), 3) : null;
     for (const geometry of new Set([this.surface, ...this.surfaceParts])) {
       if (attribute) setVertexAttribute(geometry, 'color', attribute);
       else geometry.deleteAttribute('color');

@@ -10,6 +10,7 @@
  */
 import type { BufferAttribute, BufferGeometry, InterleavedBuffer, PerspectiveCamera } from 'three';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
+import { changesOf } from './parted-attribute';
 
 /** The line-width setting's default and its choices (CSS pixels). */
 export const DEFAULT_LINE_WIDTH = 1;
@@ -100,7 +101,7 @@ export function projectedLength(length: number, distance: number, camera: Perspe
   return visible > 0 ? (length / visible) * heightPx : 0;
 }
 
-/** Fat-line geometries made from a level's indexed lines (and the position version they copy), kept until that geometry is disposed. */
+/** Fat-line geometries made from a level's indexed lines (and the changes of the points they copy: changesOf), kept until that geometry is disposed. */
 const fatLines = new WeakMap<BufferGeometry, { fat: LineSegmentsGeometry; version: number }>();
 
 /** Copies the ends of each segment of `lines` into `segments` (x y z of both ends, six numbers a segment). */
@@ -124,11 +125,11 @@ export function fatLinesOf(lines: BufferGeometry): LineSegmentsGeometry {
   const position = lines.getAttribute('position') as BufferAttribute;
   const known = fatLines.get(lines);
   if (known) {
-    if (known.version !== position.version) {
+    if (known.version !== changesOf(position)) {
       const buffer = (known.fat.getAttribute('instanceStart') as unknown as { data: InterleavedBuffer }).data;
       fillSegments(lines, buffer.array as Float32Array);
       buffer.needsUpdate = true;
-      known.version = position.version;
+      known.version = changesOf(position);
     }
     return known.fat;
   }
@@ -137,7 +138,7 @@ export function fatLinesOf(lines: BufferGeometry): LineSegmentsGeometry {
   const fat = new LineSegmentsGeometry().setPositions(segments);
   // The level's sphere: three would otherwise walk every segment.
   if (lines.boundingSphere) fat.boundingSphere = lines.boundingSphere.clone();
-  fatLines.set(lines, { fat, version: position.version });
+  fatLines.set(lines, { fat, version: changesOf(position) });
   const dispose = () => {
     fat.dispose();
     fatLines.delete(lines);

@@ -15,6 +15,9 @@ import { BufferAttribute, type BufferGeometry, GLBufferAttribute } from 'three';
 /** Bytes above which a level's vertex attribute is sent in parts (as much as a frame sends: UPLOAD_BYTES_PER_FRAME). */
 export const PARTED_ATTRIBUTE_BYTES = 4 * 1024 * 1024;
 
+/** A parted attribute changed this soon after it was all sent is changing every frame: sent whole (PartedAttribute.hurried). */
+export const HURRY_WITHIN_MS = 500;
+
 /** WebGL's FLOAT (three's GLBufferAttribute takes the GL type). */
 const GL_FLOAT = 0x1406;
 
@@ -23,6 +26,19 @@ export class PartedAttribute extends GLBufferAttribute {
   readonly array: Float32Array;
   /** Bytes of {@link array} on the GPU, from the start (the buffer is complete at array.byteLength). */
   sent = 0;
+  /**
+   * Changed again before its last change was all sent, or within
+   * {@link HURRY_WITHIN_MS} of it (Split's blend, its slider: a change
+   * every frame): the next upload sends it whole, as a plain attribute is,
+   * since parts would never catch up.
+   */
+  hurried = false;
+  /** performance.now() when the GPU last got all of {@link array} (SharedRenderer). */
+  completedAt = Number.NEGATIVE_INFINITY;
+  /** Taken off its geometries for good ({@link drop}): the renderer frees its buffer. */
+  dropped = false;
+  /** Counts the changes of {@link array} ({@link needsUpdate}); `version` also counts new buffers. */
+  changes = 0;
 
   constructor(array: Float32Array, itemSize: number) {
     // No buffer yet: SharedRenderer.upload makes it before the first draw.
@@ -35,11 +51,27 @@ export class PartedAttribute extends GLBufferAttribute {
     return this.buffer !== null && this.sent === this.array.byteLength;
   }
 
-  /** Marks {@link array} changed: it goes to the GPU again, in parts, before the next draw. */
+  /** Marks {@link array} changed: it goes to the GPU again, in parts (or whole when {@link hurried}), before the next draw. */
   override set needsUpdate(value: boolean) {
     if (!value) return;
+    if (
+      this.buffer !== null &&
+      (this.sent < this.array.byteLength || performance.now() - this.completedAt < HURRY_WITHIN_MS)
+    )
+      this.hurried = true;
     this.sent = 0;
     this.version++;
+    this.changes++;
+  }
+
+  /**
+   * Says the attribute was taken off its geometries while they live on
+   * (three frees a buffer when its geometry is disposed, not when an
+   * attribute is deleted): the shared renderer frees its buffer and lets go
+   * of it.
+   */
+  drop(): void {
+    this.dropped = true;
   }
 }
 
@@ -48,6 +80,11 @@ export function vertexAttribute(array: Float32Array, itemSize: number): BufferAt
   return array.byteLength > PARTED_ATTRIBUTE_BYTES
     ? new PartedAttribute(array, itemSize)
     : new BufferAttribute(array, itemSize);
+}
+
+/** Counts the changes of a vertex attribute's values (a plain attribute's version counts only those). */
+export function changesOf(attribute: BufferAttribute | PartedAttribute): number {
+  return attribute instanceof PartedAttribute ? attribute.changes : attribute.version;
 }
 
 /** The values of a vertex attribute made by {@link vertexAttribute} (or any BufferAttribute). */

@@ -145,17 +145,22 @@ export class SharedRenderer {
    * ahead, sending the rest itself.
    */
   upload(geometries: readonly BufferGeometry[]): boolean {
-    if (this.gpuBusy()) return true;
+    this.freeDropped();
     const pending: { attribute: Attribute | PartedAttribute; index: boolean }[] = [];
+    const hurried: PartedAttribute[] = [];
     let total = 0;
     for (const geometry of geometries) {
       const attributes = [...Object.values(geometry.attributes)].map((attribute) => ({ attribute, index: false }));
       if (geometry.index) attributes.push({ attribute: geometry.index, index: true });
       for (const entry of attributes) {
         const attribute = entry.attribute as Attribute | PartedAttribute;
-        if (pending.some((p) => p.attribute === attribute)) continue;
+        if (pending.some((p) => p.attribute === attribute) || hurried.includes(attribute as PartedAttribute)) continue;
         if (attribute instanceof PartedAttribute) {
           if (attribute.complete) continue;
+          if (attribute.hurried) {
+            hurried.push(attribute);
+            continue;
+          }
           total += attribute.array.byteLength - attribute.sent;
         } else {
           if (this.onGpu.has(attribute)) continue;
@@ -165,6 +170,10 @@ export class SharedRenderer {
       }
       this.watch(geometry);
     }
+    // A view with nothing to send draws, whatever another view's uploads left for the GPU.
+    if (pending.length === 0 && hurried.length === 0) return false;
+    if (this.gpuBusy()) return true;
+    for (const attribute of hurried) this.fill(attribute, Number.POSITIVE_INFINITY);
     const budget = total <= UPLOAD_BYTES_PER_FRAME ? Number.POSITIVE_INFINITY : UPLOAD_BYTES_PER_FRAME;
     let left = budget;
     for (const { attribute, index } of pending) {
@@ -240,11 +249,26 @@ export class SharedRenderer {
     // Vertex array objects keep their own bindings: unbinding the array buffer changes no draw.
     gl.bindBuffer(gl.ARRAY_BUFFER, null);
     attribute.sent = end;
+    if (end === array.byteLength) {
+      attribute.hurried = false;
+      attribute.completedAt = performance.now();
+    }
     return end - start;
+  }
+
+  /** Frees the buffers of parted attributes taken off their geometries (PartedAttribute.drop). */
+  private freeDropped(): void {
+    for (const attribute of this.parted) {
+      if (!attribute.dropped) continue;
+      this.renderer.getContext().deleteBuffer(attribute.buffer);
+      forgetBuffer(attribute);
+      this.parted.delete(attribute);
+    }
   }
 
   /** Sends what is missing of the parted attributes `scene` draws (a draw that no upload spread). */
   private complete(scene: Scene): void {
+    this.freeDropped();
     scene.traverseVisible((object) => {
       const geometry = (object as Partial<Mesh>).geometry;
       if (!geometry) return;
@@ -324,6 +348,7 @@ export class SharedRenderer {
 function forgetBuffer(attribute: PartedAttribute): void {
   attribute.buffer = null as unknown as WebGLBuffer;
   attribute.sent = 0;
+  attribute.hurried = false;
 }
 
 function bytesOf(attribute: Attribute): number {
