@@ -25,6 +25,12 @@ export interface ViewerReading {
 declare global {
   interface Window {
     __events?: RecordedEvent[];
+    /**
+     * Resolves with the progress label once `element` has a step under way (its first
+     * progress event of kind 'subdivide'): a test acts during a step without a fixed
+     * wait, which a fast step can beat.
+     */
+    __stepUnderWay?: (element: HTMLElement) => Promise<string>;
   }
 }
 
@@ -43,6 +49,16 @@ export class EmbedPage {
   /** Records every element event and every message from an iframe, from the first script on. */
   async recordEvents(): Promise<void> {
     await this.page.addInitScript(() => {
+      window.__stepUnderWay = (element) =>
+        new Promise<string>((resolve) => {
+          const onProgress = (event: Event) => {
+            const detail = (event as CustomEvent<{ busy: boolean; kind: string | null; label: string }>).detail;
+            if (!detail.busy || detail.kind !== 'subdivide') return;
+            element.removeEventListener('progress', onProgress);
+            resolve(detail.label);
+          };
+          element.addEventListener('progress', onProgress);
+        });
       window.__events = [];
       for (const type of ['load', 'level-change', 'error', 'progress', 'stencil', 'basis', 'distance']) {
         document.addEventListener(type, (event) => {

@@ -578,15 +578,7 @@ test.describe('what pages do to an element', () => {
         const v = e as HTMLElementTagNameMap['subdiv-viewer'];
         const started = performance.now();
         // Back to 0 as soon as the first step is under way (a fixed wait lost the race on a fast machine).
-        const stepping = new Promise<string>((resolve) => {
-          const onProgress = (event: Event) => {
-            const detail = (event as CustomEvent<{ busy: boolean; kind: string | null; label: string }>).detail;
-            if (!detail.busy || detail.kind !== 'subdivide') return;
-            v.removeEventListener('progress', onProgress);
-            resolve(detail.label);
-          };
-          v.addEventListener('progress', onProgress);
-        });
+        const stepping = (window.__stepUnderWay as (element: HTMLElement) => Promise<string>)(v);
         const done = v.setLevel(2);
         const label = await stepping;
         v.levels = 0;
@@ -704,15 +696,7 @@ test.describe('what pages do to an element, continued', () => {
         const v = e as Viewer;
         // Level 2 is asked, and cancel() called, while the first step is under way: on its progress
         // event, not after a fixed wait (the fast core's step on the bunny can end within 30 ms).
-        const stepping = new Promise<string>((resolve) => {
-          const onProgress = (event: Event) => {
-            const detail = (event as CustomEvent<{ busy: boolean; kind: string | null; label: string }>).detail;
-            if (!detail.busy || detail.kind !== 'subdivide') return;
-            v.removeEventListener('progress', onProgress);
-            resolve(detail.label);
-          };
-          v.addEventListener('progress', onProgress);
-        });
+        const stepping = (window.__stepUnderWay as (element: HTMLElement) => Promise<string>)(v);
         v.levels = 1;
         const label = await stepping;
         v.levels = 2;
