@@ -109,6 +109,15 @@ std::vector<std::uint32_t> border_of(const std::vector<std::uint32_t>& edges,
   return out;
 }
 
+/// The pairs of `edges` as they are listed (not reordered: a pair with the
+/// larger vertex first stays so, and differs from the mesh's edge).
+std::set<Edge> listed_pairs(const std::vector<std::uint32_t>& edges) {
+  std::set<Edge> out;
+  for (std::size_t i = 0; i + 1 < edges.size(); i += 2)
+    out.emplace(edges[i], edges[i + 1]);
+  return out;
+}
+
 /// The render arrays of a valid mesh, against a map of its corners: the
 /// fan of the faces drawn (holes are not), their edges once each, smaller
 /// vertex first, and among those the edges one corner of the whole mesh
@@ -134,10 +143,7 @@ void require_render_buffers(const Mesh_buffers& mesh, const std::string& w) {
     at += k;
   }
   const Render_buffers r = render_buffers(mesh);
-  std::set<Edge> drawn;
-  for (std::size_t i = 0; i + 1 < r.edges.size(); i += 2)
-    drawn.emplace(r.edges[i], r.edges[i + 1]);
-  require(r.edges.size() == 2 * shown.size() && drawn == shown,
+  require(r.edges.size() == 2 * shown.size() && listed_pairs(r.edges) == shown,
           "the render edges are not the drawn faces' edges, once each", w);
   require(r.border_edges == border_of(r.edges, corners),
           "the render border is not the edges of one corner, in edge order", w);
@@ -149,10 +155,8 @@ void require_render_buffers(const Mesh_buffers& mesh, const std::string& w) {
   Edge_sink told;
   require(build_render_buffers(mesh, told, corners.size()) == corners.size(),
           "build_render_buffers told the edges counts others", w);
-  std::set<Edge> told_drawn;
-  for (std::size_t i = 0; i + 1 < told.edges.size(); i += 2)
-    told_drawn.emplace(told.edges[i], told.edges[i + 1]);
-  require(told.edges.size() == r.edges.size() && told_drawn == shown &&
+  require(told.edges.size() == r.edges.size() &&
+              listed_pairs(told.edges) == shown &&
               told.border == border_of(told.edges, corners),
           "told the number of edges, other render edges or border", w);
 }
