@@ -260,6 +260,18 @@ TEST(RenderBuffers, HolesAreNotDrawnButTheirEdgesCount) {
   EXPECT_EQ(s.out.triangle_face, (std::vector<std::uint32_t>{0, 0, 2, 2}));
   // Vertex normals from the drawn faces only: all +z (flat strip).
   for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(s.out.normals[3 * v + 2], 1.0f);
+  // Two quads sharing edges 2-4 and 3-4, the first a hole (found by the
+  // fuzzers): the 4 edges drawn have 8 corners in the whole mesh, as many
+  // as a closed mesh would, yet the drawn quad's edges 1-2 and 1-3 are on
+  // the border.
+  Mesh_buffers pair;
+  pair.positions = {0, 0, 0, 2, 2, 0, 2, 0, 0, 0, 2, 0, 1, 1, 1};
+  pair.face_sizes = {4, 4};
+  pair.face_indices = {0, 2, 4, 3, 3, 4, 2, 1};
+  pair.tags.holes = {0};
+  const Render_buffers p = render_buffers(pair);
+  EXPECT_EQ(p.edges, (std::vector<std::uint32_t>{1, 2, 1, 3, 2, 4, 3, 4}));
+  EXPECT_EQ(p.border_edges, (std::vector<std::uint32_t>{1, 2, 1, 3}));
 }
 
 TEST(RenderBuffers, FansAPolygonFromItsFirstCorner) {

@@ -228,13 +228,12 @@ std::size_t polygon_edges(std::size_t n, const Faces& faces,
 /// The edges of `edges` (smaller vertex first) that only one corner of
 /// `faces` goes along: the border. Each face's corner edges are bucketed by
 /// their smaller vertex as polygon_edges does; an edge met once in its
-/// bucket is on the border.
+/// bucket is on the border. (`edges` may be fewer than the edges of
+/// `faces`: those of the faces drawn, holes left out.)
 void border_edges(std::size_t n, const Faces& faces,
                   const std::vector<std::uint32_t>& edges,
                   std::vector<std::uint32_t>& out) {
   out.clear();
-  // A closed mesh: every edge has two corners.
-  if (faces.indices.size() == edges.size()) return;
   std::vector<std::uint32_t> end(n + 1, 0);
   for_each_corner_edge(faces, [&end](std::uint32_t a, std::uint32_t b) {
     ++end[std::min(a, b) + 1];
@@ -311,7 +310,8 @@ std::size_t build_render_buffers(const Mesh_buffers& mesh, Render_sink& sink,
   if (faces.original != nullptr) {
     count = polygon_edges(n, all, edges);
     polygon_edges(n, faces, edges);
-    border_edges(n, all, edges, border);
+    // Closed (every edge of the whole mesh has two corners): no border.
+    if (all.indices.size() != 2 * count) border_edges(n, all, edges, border);
   } else if (expected_edges > 0 && faces.indices.size() == 2 * expected_edges &&
              edges_going_up(faces, expected_edges, edges)) {
     count = expected_edges;  // closed: no border
