@@ -136,6 +136,22 @@ TEST(Ply, CountsLargerThanTheDataAreRefusedBeforeAnyAllocation) {
             "least 12 bytes each, but only 20 bytes of data follow");
 }
 
+TEST(Ply, AnElementWithoutPropertiesCostsNothingWhateverItsCount) {
+  // Found by the fuzzers: 10^16 empty elements were read one by one (hours).
+  for (const char* encoding : {"ascii", "binary_little_endian"}) {
+    SCOPED_TRACE(encoding);
+    std::string cube = fixture_text(
+        std::string(encoding) == "ascii" ? "cube.ply" : "cube-le.ply");
+    const std::size_t at = cube.find("element vertex");
+    ASSERT_NE(at, std::string::npos);
+    cube.insert(at, "element nothing 10000000000000000\n");
+    const Result<Mesh_buffers> r = read_mesh(cube, Mesh_format::ply);
+    ASSERT_TRUE(r.ok()) << r.status.message;
+    EXPECT_EQ(r.value.vertex_count(), 8u);
+    EXPECT_EQ(r.value.face_count(), 6u);
+  }
+}
+
 TEST(Ply, TruncatedBinaryNamesTheByteAndTheElement) {
   std::string le = fixture_text("cube-le.ply");
   const std::size_t data = le.find("end_header\n") + 11;

@@ -533,6 +533,10 @@ Result<Mesh_buffers> read_ply(std::string_view bytes,
     const Ply_element& e = h.elements[ei];
     const bool is_vertex = ei == l.vertex_element;
     const bool is_face = ei == l.face_element;
+    // An element without properties holds no data (nor is it the vertex or
+    // face element, which need theirs): its count, up to 2^64 - 1, costs
+    // nothing.
+    if (e.properties.empty()) continue;
     for (std::uint64_t i = 0; i < e.count; ++i) {
       double xyz[3] = {0, 0, 0};
       for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
