@@ -6,10 +6,12 @@ import { defineConfig } from '@playwright/test';
 const port = Number(process.env.SUBDIVLAB_E2E_PORT ?? 4179);
 const externalUrl = process.env.SUBDIVLAB_E2E_URL;
 const baseURL = externalUrl ?? `http://127.0.0.1:${port}/`;
+// The built site's folder (from the project's root): two runs side by side each build their own.
+const dist = process.env.SUBDIVLAB_E2E_DIST ?? 'dist';
 
 export default defineConfig({
   testDir: 'tests/e2e',
-  outputDir: 'test-results/e2e',
+  outputDir: dist === 'dist' ? 'test-results/e2e' : `test-results/e2e-${dist.replace(/\W+/g, '-')}`,
   timeout: 60_000,
   expect: { timeout: 15_000 },
   // Two browsers, a spec file each at a time (the machines have 2 cores): the suite in 8.4 min
@@ -42,7 +44,11 @@ export default defineConfig({
   webServer: externalUrl
     ? undefined
     : {
-        command: `npx vite build --logLevel warn && npx vite build -c vite.embed.config.ts --logLevel warn && npx vite preview --port ${port} --strictPort`,
+        command: [
+          `npx vite build --logLevel warn --outDir ../${dist}`,
+          `npx vite build -c vite.embed.config.ts --logLevel warn --outDir ../${dist}/embed`,
+          `npx vite preview --port ${port} --strictPort --outDir ../${dist}`,
+        ].join(' && '),
         url: baseURL,
         reuseExistingServer: false,
         timeout: 180_000,

@@ -9,7 +9,8 @@ import { readFileSync } from 'node:fs';
 import { CONTENT_SECURITY_POLICY } from '../../web/site/content-security-policy';
 import { expect, test } from './fixtures';
 
-const PAGES = ['dist/index.html', 'dist/embed.html', 'dist/examples/index.html'];
+const DIST = process.env.SUBDIVLAB_E2E_DIST ?? 'dist';
+const PAGES = ['index.html', 'embed.html', 'examples/index.html'].map((page) => `${DIST}/${page}`);
 
 test('each built page declares the policy first, and has no inline script, style element or style attribute', () => {
   for (const path of PAGES) {
