@@ -308,7 +308,7 @@ test('SVG export: one polygon per camera-facing face, back to front, viewBox set
       fov: state.fov,
       width: size[0],
       height: size[1],
-      offset: state.viewOffset,
+      // The picture is drawn without the view's shift for the facts panel (export-framing.spec.ts).
     });
     expect(faces.length).toBe(expected);
     const depths = svg.centroids.map(([x, y]) => {

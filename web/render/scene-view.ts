@@ -391,6 +391,19 @@ export class SceneView {
     return [...this.offset];
   }
 
+  /**
+   * The camera a picture of the view is drawn with (PNG, SVG, PDF, EPS):
+   * this one without Fit's shift, since the panels it clears are not in the
+   * picture; a fitted model is then in the picture's middle, as large as on
+   * screen. A copy, without the lights that ride with the view's camera.
+   */
+  pictureCamera(): PerspectiveCamera {
+    const camera = new PerspectiveCamera().copy(this.camera, false);
+    camera.clearViewOffset();
+    camera.updateMatrixWorld();
+    return camera;
+  }
+
   /** Shifts the projection by {@link offset} (three's view offset; none when it is zero). */
   private applyOffset(): void {
     const { width, height } = this.size;
@@ -657,7 +670,7 @@ export class SceneView {
 
   /**
    * PNG of the view at `scale` × its CSS size, optionally with a transparent
-   * background: drawn once into a canvas of that size.
+   * background: drawn once into a canvas of that size, by {@link pictureCamera}.
    */
   exportPng(scale: number, transparent: boolean): Promise<Blob> {
     const { width, height } = this.size;
@@ -676,7 +689,7 @@ export class SceneView {
     if (!context) return Promise.reject(new Error('This browser cannot draw on a canvas.'));
     // Lines as wide, relative to the picture, as on screen: ×4 pixels, ×4 line widths.
     this.styleLines(w / width);
-    this.renderer.draw(this.scene, this.camera, context, w, h, transparent ? null : this.background);
+    this.renderer.draw(this.scene, this.pictureCamera(), context, w, h, transparent ? null : this.background);
     this.styleLines(this.canvas.width / width);
     if (w > this.canvas.width || h > this.canvas.height) this.renderer.shrink();
     return new Promise<Blob>((resolve, reject) =>

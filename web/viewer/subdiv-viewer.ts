@@ -626,7 +626,7 @@ export class SubdivViewer {
     const tagged = this.view.overlay('creases') && tags ? tagOverlays(tags, buffers.positions, mesh) : {};
     return buildFigure({
       mesh,
-      camera: this.view.camera,
+      camera: this.view.pictureCamera(),
       ...this.view.size,
       control,
       curves,
