@@ -354,9 +354,7 @@ export class AppShell {
       },
       vertexOnScreen: (v, shown) => {
         const at = this.viewer.view.vertexOnScreen(v, shown);
-        if (!at) return null;
-        const rect = this.viewer.view.canvas.getBoundingClientRect();
-        return { x: rect.left + at.x, y: rect.top + at.y };
+        return at && this.viewer.view.toClient(at.x, at.y);
       },
       halfedges: () => {
         const table = this.tools.halfedges.halfedges;
@@ -368,9 +366,7 @@ export class AppShell {
       },
       arrowOnScreen: (h) => {
         const at = this.tools.halfedges.arrowOnScreen(h);
-        if (!at) return null;
-        const rect = this.viewer.view.canvas.getBoundingClientRect();
-        return { x: rect.left + at.x, y: rect.top + at.y };
+        return at && this.viewer.view.toClient(at.x, at.y);
       },
       sideBySide: () => {
         const s = this.tools.sideBySide.state;

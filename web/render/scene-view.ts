@@ -21,14 +21,15 @@ import {
   Sphere,
   Vector3,
 } from 'three';
-import { TrackballControls } from 'three/addons/controls/TrackballControls.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
 import { orbitCamera, panCamera, zoomCamera } from './camera-moves';
+import { ClientMapping } from './client-mapping';
 import { DEFAULT_VIEW_DIRECTION, fitCamera, fitDistance, freeRect, viewOffsetPixels } from './fit';
 import { type LevelGraphics, showParts } from './level-graphics';
+import { MappedTrackballControls } from './mapped-trackball-controls';
 import { type Pick, pickElement, screenPointOf } from './pick';
 import { OVERLAY_DEFAULTS, type OverlayName, type RenderMode } from './render-mode';
 import { type SharedRenderer, sharedRenderer } from './shared-renderer';
@@ -39,7 +40,7 @@ import type { ViewState } from './view-state';
 
 export { VIEW_COLORS } from './view-colors';
 
-/** A click on the view: CSS pixels from its top left, and the modifier keys held. */
+/** A click on the view: its own CSS pixels from its top left (whatever transforms the page applies), and the modifier keys held. */
 export interface ViewClick {
   x: number;
   y: number;
@@ -47,7 +48,7 @@ export interface ViewClick {
   shiftKey: boolean;
 }
 
-/** A press and release this close (CSS pixels) is a click, not a drag of the camera. */
+/** A press and release this close (pixels of the screen) is a click, not a drag of the camera. */
 const CLICK_SLOP = 4;
 
 export class SceneView {
@@ -59,7 +60,9 @@ export class SceneView {
   /** Clear colour of the view (null: transparent). */
   private background: string | null = VIEW_COLORS.background;
   private readonly scene = new Scene();
-  private readonly controls: TrackballControls;
+  private readonly controls: MappedTrackballControls;
+  /** The page's pixels ↔ the view's own, under any CSS transform or zoom (a scaled slide). */
+  private readonly mapping: ClientMapping;
   private readonly surface: Mesh;
   /** The polygon edges, the cage and the marked curves: fat lines (WebGL's own are one pixel wide). */
   private readonly lines = new ViewLines(VIEW_COLORS);
@@ -114,6 +117,7 @@ export class SceneView {
     if (!context) throw new Error('This browser cannot draw on a canvas.');
     this.context = context;
     container.append(this.canvas);
+    this.mapping = new ClientMapping(container);
 
     this.camera = new PerspectiveCamera(35, 1, 0.01, 100);
     this.scene.add(this.camera);
@@ -188,7 +192,7 @@ export class SceneView {
       this.scene.add(object);
     }
 
-    this.controls = new TrackballControls(this.camera, this.canvas);
+    this.controls = new MappedTrackballControls(this.camera, this.canvas, this.mapping);
     this.controls.rotateSpeed = 3;
     this.controls.zoomSpeed = 1.2;
     this.controls.panSpeed = 0.8;
@@ -212,10 +216,10 @@ export class SceneView {
       const moved = Math.hypot(event.clientX - press.x, event.clientY - press.y);
       press = null;
       if (moved > CLICK_SLOP || !this.onClick) return;
-      const rect = this.canvas.getBoundingClientRect();
+      const at = this.mapping.toLocal({ x: event.clientX, y: event.clientY });
       this.onClick({
-        x: event.clientX - rect.left,
-        y: event.clientY - rect.top,
+        x: at.x,
+        y: at.y,
         altKey: event.altKey,
         shiftKey: event.shiftKey,
       });
@@ -351,16 +355,9 @@ export class SceneView {
     const { width, height } = this.size;
     // The view may have changed size since the resize observer last ran (a pane was just added beside it).
     if (Math.abs(this.camera.aspect - width / height) > 1e-9) this.resize();
-    const canvas = this.canvas.getBoundingClientRect();
     const covers = [...this.container.querySelectorAll<HTMLElement>('[data-covers-view]')]
       .filter((e) => e.getClientRects().length > 0)
-      .map((e) => e.getBoundingClientRect())
-      .map((r) => ({
-        left: r.left - canvas.left,
-        top: r.top - canvas.top,
-        right: r.right - canvas.left,
-        bottom: r.bottom - canvas.top,
-      }));
+      .map((e) => this.mapping.boxOf(e));
     const fitted = fitCamera({
       points,
       direction,
@@ -521,6 +518,11 @@ export class SceneView {
     return screenPointOf(level, this.camera, v, width, height);
   }
 
+  /** Where the view's point (x, y) (its own CSS pixels from its top left) is in the page's viewport (client coordinates). */
+  toClient(x: number, y: number): { x: number; y: number } {
+    return this.mapping.toClient({ x, y });
+  }
+
   /**
    * Marks control edges (`segments`: x y z of both ends, six numbers an
    * edge) and vertices (`points`: three numbers each) as selected; empty
@@ -665,7 +667,7 @@ export class SceneView {
 
   /** Size of the view in CSS pixels. */
   get size(): { width: number; height: number } {
-    return { width: Math.max(1, this.container.clientWidth), height: Math.max(1, this.container.clientHeight) };
+    return this.mapping.size;
   }
 
   /**
@@ -704,6 +706,7 @@ export class SceneView {
     this.resizeObserver.disconnect();
     this.visibilityObserver.disconnect();
     this.controls.dispose();
+    this.mapping.dispose();
     this.setBoundingBox(null, null);
     this.materials.dispose();
     this.lines.dispose();
