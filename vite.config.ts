@@ -63,7 +63,8 @@ export default defineConfig({
     },
   },
   worker: {
-    format: 'es',
+    // A classic worker: started from a blob: with importScripts on other hosts (worker-client.ts).
+    format: 'iife',
   },
   server: {
     host: '127.0.0.1',

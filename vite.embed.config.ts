@@ -29,6 +29,7 @@ export default defineConfig({
     },
   },
   worker: {
-    format: 'es',
+    // A classic worker: started from a blob: with importScripts on other hosts (worker-client.ts).
+    format: 'iife',
   },
 });

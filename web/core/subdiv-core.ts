@@ -110,6 +110,10 @@ async function load(source: InitSource): Promise<void> {
   };
   if (source.wasmModule) {
     const compiled = source.wasmModule;
+    // The glue never fetches the .wasm here; without locateFile it still resolves its URL
+    // against the script's, which in a classic worker started from a blob: (another host,
+    // a sandboxed frame) is the blob: URL, no base for a relative URL (TypeError).
+    moduleArgs.locateFile = (path: string) => path;
     // Emscripten's hook for instantiating a module it did not fetch; a failure
     // here would leave the glue waiting, so it rejects the load instead.
     let fail: (error: unknown) => void = () => undefined;

@@ -76,6 +76,37 @@ export class CoreCrashedError extends SubdivError {
   }
 }
 
+/**
+ * Rejection of every request when the core could not be started: its worker
+ * failed before answering anything (a script that did not load, a policy
+ * that refuses workers), or loading the core in it failed (the `.wasm` not
+ * fetched). Not a crash: nothing ran in it and no level was lost. The client
+ * does not try again, as it would fail the same way; the page says once why.
+ */
+export class CoreStartError extends SubdivError {
+  constructor(
+    /** Why, as the browser or the worker said it, with what the page or its host can do. */
+    readonly reason: string,
+  ) {
+    super('internal_error', `The SubdivLab core could not be started: ${reason}`);
+    this.name = 'CoreStartError';
+  }
+}
+
+/**
+ * Why a worker that answered nothing failed: the error event's message when
+ * there is one (a worker that threw while loading), otherwise its script did
+ * not load; in a sandboxed frame (an opaque origin) what such a frame needs.
+ */
+function startFailureReason(message: string): string {
+  const why = message || 'its worker script did not load';
+  const where =
+    globalThis.origin === 'null'
+      ? ' This page is in a sandboxed frame (an opaque origin): the frame needs sandbox="allow-scripts" and, under a Content-Security-Policy, worker-src blob: and script-src for the SubdivLab host.'
+      : ' Check that the files beside subdiv-viewer.js (assets/) are served, and that a Content-Security-Policy allows the worker (worker-src).';
+  return `${why}.${where}`;
+}
+
 function crashSummary(request: WorkerRequestKind | null, reason: string): string {
   const doing = request ? ` while ${DOING[request] ?? `answering a ${request} request`}` : '';
   return `stopped unexpectedly${doing} (${reason}). A new one was started; the levels already shown are kept.`;
@@ -107,19 +138,25 @@ const DOING: Partial<Record<WorkerRequestKind, string>> = {
 /** Makes the worker; the default one is bundled by Vite from subdiv-worker.ts. */
 export type WorkerFactory = () => Worker;
 
+/** The bundled worker, a classic script (`worker.format: 'iife'` in both Vite configs). */
+const defaultFactory: WorkerFactory = () => startWorker(new URL(workerUrl, import.meta.url));
+
 /**
- * The bundled worker. Browsers start workers only from the page's own
- * origin: when this module is loaded from another host (a course page
- * pointing at wherever SubdivLab is hosted), a same-origin blob module
- * imports the worker from there instead.
+ * Starts the worker script at `url`, a classic script. Browsers start
+ * workers only from the page's own origin: from another host (a course page
+ * pointing at wherever SubdivLab is hosted, or a sandboxed frame, whose
+ * origin is opaque) a same-origin `blob:` worker runs `importScripts(url)`,
+ * which needs no CORS. A classic shim, not a module one: Chromium refuses a
+ * module worker from a `blob:` URL in an opaque origin
+ * (`sandbox="allow-scripts"`), and an import would need CORS.
  */
-const defaultFactory: WorkerFactory = () => {
-  const url = new URL(workerUrl, import.meta.url);
-  const options: WorkerOptions = { type: 'module', name: 'subdivlab-core' };
-  if (url.origin === self.location.origin) return new Worker(url, options);
-  const shim = new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' });
+export function startWorker(url: URL): Worker {
+  const options: WorkerOptions = { name: 'subdivlab-core' };
+  // The document's origin, not its URL's: a sandboxed frame's is opaque ('null') whatever its URL.
+  if (url.origin === self.origin) return new Worker(url, options);
+  const shim = new Blob([`importScripts(${JSON.stringify(url.href)});`], { type: 'text/javascript' });
   return new Worker(URL.createObjectURL(shim), options);
-};
+}
 
 /** Where the page fetches the core's `.wasm` (Vite rewrites the URL to the emitted asset). */
 const WASM_URL = new URL('./generated/subdivlab.wasm', import.meta.url).href;
@@ -158,6 +195,8 @@ export class WorkerClient {
   private disposed = false;
   private workerEpoch = 0;
   private readonly crashListeners = new Set<(error: CoreCrashedError) => void>();
+  /** Set once the core could not be started: every request rejects with it. */
+  private startFailure: CoreStartError | null = null;
 
   /**
    * @param factory makes a worker (tests pass their own).
@@ -238,8 +277,8 @@ export class WorkerClient {
     args: WorkerRequests[K]['args'],
   ): Promise<WorkerRequests[K]['result']> {
     return new Promise((resolve, reject) => {
-      if (this.disposed) {
-        reject(new CancelledError());
+      if (this.disposed || this.startFailure) {
+        reject(this.startFailure ?? new CancelledError());
         return;
       }
       this.queue.push({ id: this.nextId++, session, kind, args, resolve: resolve as (v: unknown) => void, reject });
@@ -298,7 +337,7 @@ export class WorkerClient {
       try {
         args = { module: await this.module, epoch: this.workerEpoch };
       } catch (error) {
-        this.settle(request, { id: request.id, ok: false, error: errorData(error) });
+        if (this.running === request) this.failStart(errorData(error).message);
         return;
       }
       if (this.running !== request) return;
@@ -311,10 +350,18 @@ export class WorkerClient {
       return;
     }
     const message: WorkerRequestMessage = { id: request.id, kind: request.kind, args: args as never };
+    let worker: Worker;
     try {
-      this.ensureWorker().postMessage(message);
+      worker = this.ensureWorker();
     } catch (error) {
-      // A worker the page may not start (a Content-Security-Policy), or arguments that cannot be sent.
+      // A worker the page may not start (a Content-Security-Policy, a URL it refuses).
+      this.failStart(startFailureReason(errorData(error).message));
+      return;
+    }
+    try {
+      worker.postMessage(message);
+    } catch (error) {
+      // Arguments that cannot be sent.
       this.settle(request, { id: request.id, ok: false, error: errorData(error) });
     }
   }
@@ -322,19 +369,38 @@ export class WorkerClient {
   private ensureWorker(): Worker {
     if (this.worker) return this.worker;
     const worker = this.factory();
+    /** Whether this worker has answered once: an error before that is a failed start, not a crash. */
+    let answered = false;
     worker.onmessage = (event: MessageEvent<WorkerResponseMessage>) => {
+      answered = true;
       const response = event.data;
       if (!this.running || response.id !== this.running.id) return;
       if (!response.ok && response.fatal) this.crashed(worker, response.error.message);
       else this.settle(this.running, response);
     };
-    worker.onerror = (event: ErrorEvent) => {
-      // A worker that fails to load or crashes answers nothing more: fail what runs, start afresh.
+    // A load failure fires a plain Event; an error thrown in the worker an ErrorEvent with its message.
+    worker.onerror = (event: Event) => {
       event.preventDefault();
-      this.crashed(worker, event.message || 'The SubdivLab core worker failed to start.');
+      const message = (event as Partial<ErrorEvent>).message ?? '';
+      if (answered) this.crashed(worker, message || 'The SubdivLab core worker failed.');
+      else if (this.worker === worker) this.failStart(startFailureReason(message));
     };
     this.worker = worker;
     return worker;
+  }
+
+  /**
+   * The core could not be started: the running and queued requests, and
+   * every later one, reject with one CoreStartError.
+   */
+  private failStart(reason: string): void {
+    const error = new CoreStartError(reason);
+    this.startFailure = error;
+    this.worker?.terminate();
+    this.worker = null;
+    const all = [...(this.running ? [this.running] : []), ...this.queue.splice(0)];
+    this.running = null;
+    for (const r of all) r.reject(error);
   }
 
   /**
@@ -342,7 +408,7 @@ export class WorkerClient {
    * on), the next one loads the core first, and the running request fails
    * with CoreCrashedError, which the listeners hear of. A worker that fails
    * while loading the core is not started again (it would fail the same
-   * way): the init request fails with the reason.
+   * way): that is a failed start (CoreStartError).
    */
   private crashed(worker: Worker, reason: string): void {
     worker.terminate();
@@ -351,7 +417,7 @@ export class WorkerClient {
     this.workerEpoch++;
     const running = this.running;
     if (running?.kind === 'init') {
-      this.settle(running, { id: running.id, ok: false, error: { code: 'internal_error', message: reason, line: 0 } });
+      this.failStart(reason);
       return;
     }
     // The next worker loads the core first (from the page's compiled module), as after a cancel.
@@ -367,6 +433,10 @@ export class WorkerClient {
 
   private settle(request: Queued, response: WorkerResponseMessage): void {
     if (this.running !== request) return;
+    if (request.kind === 'init' && !response.ok) {
+      this.failStart(response.error.message);
+      return;
+    }
     this.running = null;
     if (response.ok) request.resolve(response.value);
     else request.reject(new SubdivError(response.error.code, response.error.message, response.error.line));
