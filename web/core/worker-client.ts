@@ -138,24 +138,30 @@ const DOING: Partial<Record<WorkerRequestKind, string>> = {
 /** Makes the worker; the default one is bundled by Vite from subdiv-worker.ts. */
 export type WorkerFactory = () => Worker;
 
-/** The bundled worker, a classic script (`worker.format: 'iife'` in both Vite configs). */
-const defaultFactory: WorkerFactory = () => startWorker(new URL(workerUrl, import.meta.url));
+/**
+ * The bundled worker: a classic script in builds (`worker.format: 'iife'` in
+ * both Vite configs); Vite's dev server serves it as a module whatever the
+ * format.
+ */
+const defaultFactory: WorkerFactory = () =>
+  startWorker(new URL(workerUrl, import.meta.url), import.meta.env.DEV ? 'module' : 'classic');
 
 /**
- * Starts the worker script at `url`, a classic script. Browsers start
- * workers only from the page's own origin: from another host (a course page
- * pointing at wherever SubdivLab is hosted, or a sandboxed frame, whose
- * origin is opaque) a same-origin `blob:` worker runs `importScripts(url)`,
- * which needs no CORS. A classic shim, not a module one: Chromium refuses a
- * module worker from a `blob:` URL in an opaque origin
- * (`sandbox="allow-scripts"`), and an import would need CORS.
+ * Starts the worker script at `url`. Browsers start workers only from the
+ * page's own origin: from another host (a course page pointing at wherever
+ * SubdivLab is hosted, or a sandboxed frame, whose origin is opaque) a
+ * same-origin `blob:` worker runs `importScripts(url)`, which needs no CORS.
+ * A classic shim, not a module one: Chromium refuses a module worker from a
+ * `blob:` URL in an opaque origin (`sandbox="allow-scripts"`), and an import
+ * would need CORS.
  */
-export function startWorker(url: URL): Worker {
-  const options: WorkerOptions = { name: 'subdivlab-core' };
+export function startWorker(url: URL, type: WorkerType = 'classic'): Worker {
+  const options: WorkerOptions = { name: 'subdivlab-core', type };
   // The document's origin, not its URL's: a sandboxed frame's is opaque ('null') whatever its URL.
   if (url.origin === self.origin) return new Worker(url, options);
-  const shim = new Blob([`importScripts(${JSON.stringify(url.href)});`], { type: 'text/javascript' });
-  return new Worker(URL.createObjectURL(shim), options);
+  const load =
+    type === 'module' ? `import ${JSON.stringify(url.href)};` : `importScripts(${JSON.stringify(url.href)});`;
+  return new Worker(URL.createObjectURL(new Blob([load], { type: 'text/javascript' })), options);
 }
 
 /** Where the page fetches the core's `.wasm` (Vite rewrites the URL to the emitted asset). */
