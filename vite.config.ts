@@ -1,5 +1,6 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
+import { loaderScript } from './vite.embed.config.ts';
 import { policyMetaTag } from './web/site/content-security-policy.ts';
 
 const page = (path: string) => fileURLToPath(new URL(path, import.meta.url));
@@ -21,20 +22,28 @@ function contentSecurityPolicy(): Plugin {
 }
 
 /**
- * In the dev server, embed/subdiv-viewer.js (the built element's name, as
- * public/examples/ and the Embed dialog's snippets write it) is the module's
- * source; `vite build -c vite.embed.config.ts` makes the real file. And
- * examples/ is its index page, as a static host serves it (the dev server
- * would answer with the app).
+ * In the dev server, embed/subdiv-viewer.js (the built loader's name, as
+ * public/examples/ and the Embed dialog's snippets write it) is the loader
+ * importing the element's source, and embed/iframe-route.js (embed.html's
+ * script) its source; `vite build -c vite.embed.config.ts` makes the real
+ * files. And examples/ is its index page, as a static host serves it (the
+ * dev server would answer with the app).
  */
 function embedModuleInDev(): Plugin {
   return {
     name: 'subdivlab-embed-module-in-dev',
     configureServer(server) {
-      server.middlewares.use((request, _response, next) => {
+      server.middlewares.use((request, response, next) => {
         const url = request.url ?? '';
         if (url.startsWith('/embed/subdiv-viewer.js')) {
-          request.url = url.replace('/embed/subdiv-viewer.js', '/embed/subdiv-viewer.ts');
+          loaderScript('./subdiv-viewer.ts').then((code) => {
+            response.setHeader('content-type', 'text/javascript');
+            response.end(code);
+          }, next);
+          return;
+        }
+        if (url.startsWith('/embed/iframe-route.js')) {
+          request.url = url.replace('/embed/iframe-route.js', '/embed/iframe-route.ts');
         } else if (/^\/examples\/?(\?|$)/.test(url)) {
           request.url = url.replace(/^\/examples\/?/, '/examples/index.html');
         }
@@ -46,7 +55,8 @@ function embedModuleInDev(): Plugin {
 
 // The app lives in web/; sample meshes in public/ are served as-is. A relative
 // base makes the built site work from any sub-path of any static host.
-// Two pages: the app (index.html) and the iframe route (embed.html).
+// Two pages: the app (index.html) and the iframe route (embed.html, whose script
+// vite.embed.config.ts builds with the element's, so they share three.js).
 export default defineConfig({
   root: 'web',
   publicDir: '../public',
@@ -71,5 +81,9 @@ export default defineConfig({
   },
   preview: {
     host: '127.0.0.1',
+    // Access-Control-Allow-Origin: * for every origin, as public static hosts send it: the e2e
+    // tests' sandboxed frames (origin null) load the element from here, which Vite's default
+    // (localhost origins only) refuses. A test server setting; the built files are unchanged.
+    cors: true,
   },
 });

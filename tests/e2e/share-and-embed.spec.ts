@@ -297,7 +297,7 @@ test('Embed… gives an element and an iframe snippet with the exact state; Copy
   await test.step('element snippet', async () => {
     const code = await app.byTestId('embed.element.code').inputValue();
     const [script, viewer] = await parseSnippet(app, code, ['script', 'subdiv-viewer']);
-    expect(script).toEqual({ type: 'module', src: `${base}embed/subdiv-viewer.js` });
+    expect(script).toEqual({ defer: '', src: `${base}embed/subdiv-viewer.js` });
     const { view, alt, ...rest } = viewer;
     expect(rest).toEqual({
       src: `${base}meshes/octahedron.off`,

@@ -16,7 +16,7 @@ describe('embed snippets', () => {
       subject,
     );
     expect(code).toBe(
-      '<script type="module" src="https://example.org/lab/embed/subdiv-viewer.js"></script>\n' +
+      '<script defer src="https://example.org/lab/embed/subdiv-viewer.js"></script>\n' +
         '<subdiv-viewer\n  src="https://example.org/lab/meshes/cube.off"\n  scheme="catmull-clark"\n  levels="1"\n' +
         '  render-mode="smooth"\n  controls="minimal"\n' +
         '  alt="cube.off after 1 Catmull-Clark subdivision step (24 faces), smooth shaded."\n></subdiv-viewer>',

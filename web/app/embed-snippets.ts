@@ -87,7 +87,8 @@ export function elementSnippet(params: ViewerParams, subject: EmbedSubject): str
   if (p.lineWidth !== undefined) add('line-width', String(p.lineWidth));
   add('controls', 'minimal');
   add('alt', describeView(p, subject));
-  const script = `<script type="module" src="${escapeAttribute(`${subject.appBase}embed/subdiv-viewer.js`)}"></script>`;
+  // A classic script (embed/subdiv-viewer-loader.ts): it runs on a host without CORS too, where it says what is missing.
+  const script = `<script defer src="${escapeAttribute(`${subject.appBase}embed/subdiv-viewer.js`)}"></script>`;
   // One attribute a line: a teacher reads and edits the snippet.
   return `${script}\n<subdiv-viewer\n  ${attrs.join('\n  ')}\n></subdiv-viewer>`;
 }

@@ -1,0 +1,204 @@
+/**
+ * dist/embed/subdiv-viewer.js, the file a page includes: a small classic
+ * script (no import or export, so `<script src>` and `<script type="module"
+ * src>` both run it) that imports the element's module beside it. A module
+ * from another host needs CORS, where a classic script does not: on a host
+ * that sends no `Access-Control-Allow-Origin`, the import fails, and this
+ * script defines `<subdiv-viewer>` as a box saying so, with the iframe route
+ * (`embed.html`, which needs no CORS) as the way round. Nothing else stays
+ * empty: each element shows the box and fires `error`.
+ *
+ * Built by vite.embed.config.ts (classicLoader), which writes the module's
+ * file name in place of the marker below; it imports nothing, so that the
+ * build only strips its types.
+ */
+(() => {
+  /** The element module's path from this script, set by the build. */
+  const ELEMENT_MODULE = '__SUBDIVLAB_ELEMENT_MODULE__';
+
+  /** Why the module did not run, as the box and the `error` event say it. */
+  interface Unavailable {
+    /** The sentences of the box, in order. */
+    lines: string[];
+    /** The message of the `error` event. */
+    message: string;
+  }
+
+  const scriptUrl = ownUrl();
+  const moduleUrl = new URL(ELEMENT_MODULE, scriptUrl).href;
+  import(moduleUrl).catch(async (error: unknown) => {
+    if (customElements.get('subdiv-viewer')) return;
+    const unavailable = await diagnose(moduleUrl, error);
+    if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', unavailableElement(unavailable));
+  });
+
+  /**
+   * This script's URL: `document.currentScript` as a classic script; as a
+   * module (no currentScript) the page's script that names this file, else
+   * the URL in a stack trace, which every browser writes.
+   */
+  function ownUrl(): string {
+    const current = document.currentScript;
+    if (current instanceof HTMLScriptElement && current.src) return current.src;
+    for (const script of document.querySelectorAll<HTMLScriptElement>('script[src]')) {
+      if (/\/subdiv-viewer\.js([?#]|$)/.test(script.src)) return script.src;
+    }
+    const inStack = /(https?:\/\/[^\s)]+?\.js)(?:[?#][^\s):]*)?:\d+:\d+/.exec(new Error().stack ?? '');
+    return inStack ? inStack[1] : new URL('embed/subdiv-viewer.js', document.baseURI).href;
+  }
+
+  /**
+   * Tells a host without CORS from one that is down or lacks the file: a
+   * CORS request that fails while a no-cors one gets an answer means the
+   * server is there and sends no `Access-Control-Allow-Origin`.
+   */
+  async function diagnose(url: string, error: unknown): Promise<Unavailable> {
+    const host = new URL(url).origin;
+    const said = error instanceof Error ? error.message : String(error);
+    try {
+      const response = await fetch(url, { cache: 'no-store' });
+      if (!response.ok) {
+        return {
+          lines: [`The SubdivLab module ${url} is not there (HTTP ${response.status}).`, copyHint()],
+          message: `The SubdivLab module ${url} could not be loaded: HTTP ${response.status}.`,
+        };
+      }
+      return {
+        lines: [`The SubdivLab module ${url} did not run in this browser (${said}).`],
+        message: `The SubdivLab module ${url} did not run: ${said}`,
+      };
+    } catch {
+      const answered = await fetch(url, { mode: 'no-cors', cache: 'no-store' }).then(
+        () => true,
+        () => false,
+      );
+      if (!answered || host === self.origin) {
+        return {
+          lines: [`The SubdivLab module ${url} could not be loaded (${said}).`, copyHint()],
+          message: `The SubdivLab module ${url} could not be loaded: ${said}`,
+        };
+      }
+      const who = self.origin === 'null' ? 'this sandboxed frame (origin null)' : self.origin;
+      return {
+        lines: [
+          `${host} does not send CORS headers, so the browser will not run SubdivLab's module on this page.`,
+          `The host must send Access-Control-Allow-Origin: * (or ${who}) with the files under ${new URL('.', scriptUrl).pathname}.`,
+        ],
+        message:
+          `${host} sends no CORS headers (Access-Control-Allow-Origin), so the module ${url} cannot run on this page; ` +
+          'the iframe route (embed.html) needs none.',
+      };
+    }
+  }
+
+  function copyHint(): string {
+    return 'Copy the whole embed/ folder of the build (subdiv-viewer.js and assets/) next to the page.';
+  }
+
+  /**
+   * `<subdiv-viewer>` as the box, at the element's size: the reason, and the
+   * iframe route with the element's own settings, as a link and a button
+   * that puts it in the box's place.
+   */
+  function unavailableElement(unavailable: Unavailable): CustomElementConstructor {
+    return class SubdivViewerUnavailable extends HTMLElement {
+      connectedCallback(): void {
+        if (this.shadowRoot) return;
+        const root = this.attachShadow({ mode: 'open' });
+        const box = document.createElement('div');
+        box.className = 'box';
+        box.setAttribute('part', 'message');
+        box.setAttribute('role', 'alert');
+        const title = document.createElement('strong');
+        title.textContent = 'The SubdivLab viewer cannot start here.';
+        box.append(title);
+        for (const line of unavailable.lines) {
+          const p = document.createElement('p');
+          p.textContent = line;
+          box.append(p);
+        }
+        const route = iframeRoute(this);
+        const p = document.createElement('p');
+        const link = document.createElement('a');
+        link.href = route;
+        link.target = '_blank';
+        link.rel = 'noopener';
+        link.textContent = `embed.html${decodeURIComponent(new URL(route).search)}`;
+        p.append('Or use the iframe route, which needs no CORS: ', link, '. ');
+        const show = document.createElement('button');
+        show.type = 'button';
+        show.setAttribute('part', 'show-iframe');
+        show.textContent = 'Show it here';
+        // The student sees the model now; the box comes back when the page is loaded again.
+        show.addEventListener('click', () => {
+          const frame = document.createElement('iframe');
+          frame.src = route;
+          frame.title = this.getAttribute('alt') ?? 'SubdivLab viewer';
+          frame.setAttribute('part', 'iframe');
+          box.replaceWith(frame);
+        });
+        p.append(show);
+        box.append(p);
+        appendStyles(root);
+        root.append(box);
+        this.dispatchEvent(
+          new CustomEvent('error', {
+            detail: { code: 'load_error', message: unavailable.message, line: 0, source: moduleUrl },
+            bubbles: true,
+            composed: true,
+          }),
+        );
+      }
+    };
+  }
+
+  /** embed.html beside embed/, with the element's attributes as its query (names as in the share link). */
+  function iframeRoute(element: HTMLElement): string {
+    const url = new URL('../embed.html', scriptUrl);
+    const keys: Record<string, string> = { 'render-mode': 'mode', 'line-width': 'lines' };
+    for (const { name, value } of Array.from(element.attributes)) {
+      if (name === 'id' || name === 'class' || name === 'style' || name === 'tabindex') continue;
+      if (name === 'src') url.searchParams.set('src', new URL(value, document.baseURI).href);
+      else if (name === 'beside')
+        url.searchParams.set(
+          'beside',
+          value
+            .trim()
+            .split(/[\s,]+/)
+            .join(','),
+        );
+      else url.searchParams.set(keys[name] ?? name, value);
+    }
+    return url.href;
+  }
+
+  const CSS = `
+:host { display: block; position: relative; width: 100%; height: 320px; min-height: 120px;
+  font: 13px/1.4 system-ui, -apple-system, 'Segoe UI', Roboto, sans-serif; }
+:host([hidden]) { display: none; }
+.box { position: absolute; inset: 0; overflow: auto; padding: 10px 14px; box-sizing: border-box; border-radius: 6px;
+  background: #fff7ed; color: #7c2d12; border: 2px solid #f97316; }
+p { margin: 6px 0 0; overflow-wrap: anywhere; }
+a { color: #9a3412; }
+button { font: inherit; padding: 2px 10px; border-radius: 4px; border: 1px solid #c2410c; background: #ffedd5;
+  color: inherit; cursor: pointer; }
+button:focus-visible { outline: 3px solid #2563eb; outline-offset: 2px; }
+iframe { position: absolute; inset: 0; width: 100%; height: 100%; border: 0; }
+@media (prefers-color-scheme: dark) {
+  .box { background: #431407; color: #ffedd5; }
+  a { color: #fdba74; }
+}`;
+
+  /** A constructed sheet, which a page's Content-Security-Policy allows without 'unsafe-inline'. */
+  function appendStyles(root: ShadowRoot): void {
+    if ('replaceSync' in CSSStyleSheet.prototype) {
+      const sheet = new CSSStyleSheet();
+      sheet.replaceSync(CSS);
+      root.adoptedStyleSheets = [sheet];
+    } else {
+      const style = document.createElement('style');
+      style.textContent = CSS;
+      root.append(style);
+    }
+  }
+})();
