@@ -27,6 +27,7 @@ import { RulesPanel } from '../ui/rules-panel';
 import { SchemePanel } from '../ui/scheme-panel';
 import { SharePanel } from '../ui/share-panel';
 import { installShortcuts, shortcutsHelp } from '../ui/shortcuts';
+import { skipLinks } from '../ui/skip-links';
 import { handleViewKey } from '../ui/view-keys';
 import { messageOf } from '../viewer/error-message';
 import { formatBytes } from '../viewer/memory-budget';
@@ -104,6 +105,7 @@ export class AppShell {
       testId: 'viewer',
       className: 'viewer',
       attrs: {
+        id: 'subdivlab-view',
         role: 'region',
         tabindex: '0',
         'aria-label': '3D view: drag or arrow keys rotate, right-drag or Shift+arrows pan, wheel or +/− zoom',
@@ -229,14 +231,25 @@ export class AppShell {
       }),
     );
 
+    // What a student needs first (scheme, levels, then how the model is shown) before the teaching tools.
+    const toolGroup = el(
+      'section',
+      { testId: 'tools', className: 'tool-group', attrs: { 'aria-labelledby': 'tools-heading' } },
+      el('h2', { text: 'Teaching tools', attrs: { id: 'tools-heading' } }),
+      this.rules.element,
+      ...this.tools.panels,
+    );
     const sidebar = el(
       'aside',
-      { className: 'sidebar', attrs: { 'aria-label': 'Controls' } },
+      {
+        testId: 'controls',
+        className: 'sidebar',
+        attrs: { id: 'subdivlab-controls', 'aria-label': 'Controls', tabindex: '-1' },
+      },
       this.scheme.element,
-      this.rules.element,
       this.levels.element,
-      ...this.tools.panels,
       this.display.element,
+      toolGroup,
       shortcutsHelp(),
     );
     const main = el(
@@ -248,6 +261,10 @@ export class AppShell {
     );
     const dropZone = new DropZone(document, (file) => void this.openFile(file));
     root.replaceChildren(
+      skipLinks([
+        { label: 'Skip to the view', testId: 'skip.view', target: stage },
+        { label: 'Skip to the controls', testId: 'skip.controls', target: sidebar },
+      ]),
       header,
       el('div', { className: 'app-body' }, sidebar, main),
       dropZone.element,

@@ -216,5 +216,15 @@ export class AppTools {
     if (mode === 'inspect') this.inspector.setInspecting(true);
     if (mode === 'basis') this.basis.setPicking(true);
     if (mode === 'halfedges') this.halfedges.setExploring(true);
+    // A tool turned on by a key or from another panel (Check's stencil buttons): its panel comes into sight.
+    const panel =
+      mode &&
+      {
+        creases: this.creasePanel,
+        inspect: this.stencilPanel,
+        basis: this.basisPanel,
+        halfedges: this.halfedgePanel,
+      }[mode];
+    panel?.element.scrollIntoView({ block: 'nearest' });
   }
 }
