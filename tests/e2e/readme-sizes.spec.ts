@@ -77,11 +77,14 @@ function expectClose(row: SizeRow, actual: Size): void {
   }
 }
 
-/** The table's row for built file `path` (relative to the table's folder): its pattern matches the name. */
+/**
+ * The table's row for built file `path` (relative to the table's folder): its name with `*` for
+ * Vite's 8-character content hash (so `assets/subdiv-viewer-*.js` is not `assets/subdiv-viewer-element-*.js`).
+ */
 function rowOf(rows: SizeRow[], path: string): SizeRow | undefined {
   return rows.find((row) => {
     if (row.file === null) return false;
-    const glob = row.file.replace(/[.+?^${}()|[\]\\]/g, '\\$&').replace(/\*/g, '[^/]+');
+    const glob = row.file.replace(/[.+?^${}()|[\]\\]/g, '\\$&').replace(/\*/g, '[A-Za-z0-9_-]{8}');
     return new RegExp(`^${glob}$`).test(path);
   });
 }
