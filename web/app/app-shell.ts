@@ -44,6 +44,7 @@ import {
 import { AppTools } from './app-tools';
 import { cancelMessage } from './cancel-message';
 import { ExportActions } from './export-actions';
+import { FirstLook } from './first-look';
 import { SAMPLES } from './samples';
 import { type ModelSource, ShareActions } from './share-actions';
 import type { SubdivLabTestApi, TestError } from './test-api';
@@ -88,6 +89,8 @@ export class AppShell {
   private tagNotice = false;
   /** Where the shown model came from (null before the first load). */
   private source: ModelSource | null = null;
+  /** The first visit's edges and cage, until chosen: a model opened next gets the look that suits it. */
+  private readonly firstLook = new FirstLook();
 
   constructor(root: HTMLElement) {
     this.fileInput = el('input', {
@@ -171,8 +174,14 @@ export class AppShell {
     this.views = new ViewActions(this.viewer, (view) => this.tools.sideBySide.fit(view));
     this.display = new DisplayPanel(
       {
-        onRenderMode: (m) => this.viewer.setRenderMode(m),
-        onOverlay: (name, on) => this.viewer.setOverlay(name, on),
+        onRenderMode: (m) => {
+          this.firstLook.chose('renderMode');
+          this.viewer.setRenderMode(m);
+        },
+        onOverlay: (name, on) => {
+          if (name === 'control') this.firstLook.chose('control');
+          this.viewer.setOverlay(name, on);
+        },
       },
       this.views.controls.element,
     );
@@ -278,11 +287,15 @@ export class AppShell {
       document,
       {
         subdivide: () => void this.subdivide(),
-        cycleRenderMode: () => this.viewer.setRenderMode(nextRenderMode(this.viewer.state.renderMode)),
+        cycleRenderMode: () => {
+          this.firstLook.chose('renderMode');
+          this.viewer.setRenderMode(nextRenderMode(this.viewer.state.renderMode));
+        },
         toggleOverlay: (name) => {
           // As the disabled checkbox: a key may switch an unavailable overlay off, never on.
           const state = this.viewer.state;
           const on = !state.overlays[name];
+          if (name === 'control') this.firstLook.chose('control');
           if (!on || overlayAvailable(name, state)) this.viewer.setOverlay(name, on);
         },
         fit: () => this.views.fit(),
@@ -426,9 +439,13 @@ export class AppShell {
    */
   async start(): Promise<void> {
     const firstVisit = window.location.hash.length <= 1 && !new URLSearchParams(window.location.search).has('src');
+    // A hash the user goes to (Back, Forward, an edited link) says how to show what it opens.
+    for (const type of ['popstate', 'hashchange']) window.addEventListener(type, () => this.firstLook.end());
     await this.urlState.start();
     const sample = this.source?.kind === 'url' && this.source.src === FIRST_VISIT.src;
     this.firstVisitHint.hidden = !(firstVisit && sample);
+    const { renderMode, overlays } = this.viewer.state;
+    if (firstVisit && sample) this.firstLook.begin({ renderMode, control: overlays.control });
   }
 
   async openFile(file: File): Promise<boolean> {
@@ -473,6 +490,8 @@ export class AppShell {
       await this.viewer.loadText(mesh.text, mesh.format, mesh.name, options);
       if (this.viewer.state.modelName !== mesh.name) return false;
       this.source = source;
+      const faces = this.viewer.state.facts?.faces;
+      if (faces !== undefined) this.firstLook.apply(this.viewer, faces);
       this.firstVisitHint.hidden = true;
       this.sharePanel.clear();
       this.errors.hide();
