@@ -13,7 +13,7 @@
  * mapping.
  */
 import { readFileSync } from 'node:fs';
-import type { Page } from '@playwright/test';
+import type { Frame, Page } from '@playwright/test';
 import { viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
 
@@ -66,8 +66,19 @@ function project(p: Vec, width: number, height: number): [number, number] {
 const ELEMENT = `<subdiv-viewer id="v" src="../meshes/cube.off" levels="1" tool="basis" control-mesh controls="none"
   view="${[...VIEW.position, ...VIEW.target, ...VIEW.up].join(',')}"></subdiv-viewer>`;
 
-/** A reveal.js deck of 1280 × 720 (its own CSS and script, from node_modules) with the element on its first slide. */
-function deck(options: { zoom?: number } = {}): string {
+/** The same viewer through the iframe route (embed.html), 800 × 480. */
+const IFRAME = `<iframe title="Where one control vertex reaches" width="800" height="480" style="border:0;display:block;margin:0 auto"
+  src="../embed.html?src=meshes/cube.off&amp;levels=1&amp;tool=basis&amp;control-mesh=1&amp;controls=none&amp;view=${[
+    ...VIEW.position,
+    ...VIEW.target,
+    ...VIEW.up,
+  ].join(',')}"></iframe>`;
+
+/**
+ * A reveal.js deck of 1280 × 720 (its own CSS and script, from node_modules) with the element on its
+ * first slide (in a box of `zoom`), or the iframe route.
+ */
+function deck(options: { zoom?: number; iframe?: boolean } = {}): string {
   const style = options.zoom ? ` style="zoom:${options.zoom}"` : '';
   // Zoomed, it is as large on the slide as 800 × 480 unzoomed.
   const size = options.zoom ? '640px;height:384px' : '800px;height:480px';
@@ -76,7 +87,7 @@ function deck(options: { zoom?: number } = {}): string {
 <script type="module" src="../embed/subdiv-viewer.js"></script>
 <style>.reveal subdiv-viewer{display:block;width:${size};margin:0 auto}</style></head><body>
 <div class="reveal"><div class="slides"><section>
-<h3>Where does one control vertex reach?</h3><div${style}>${ELEMENT}</div>
+<h3>Where does one control vertex reach?</h3><div${style}>${options.iframe ? IFRAME : ELEMENT}</div>
 </section><section><h3>The next slide</h3></section></div></div>
 <script src="../reveal/reveal.js"></script>
 <script>Reveal.initialize({ width: 1280, height: 720, margin: 0.1, transition: 'none', hash: false, controls: false, progress: false });</script>
@@ -91,10 +102,13 @@ async function serveReveal(page: Page): Promise<void> {
   });
 }
 
-/** The canvas's layout size (its own CSS pixels), its bounding rectangle in the page and its bitmap's size. */
-async function canvasLayout(page: Page): Promise<Layout> {
-  return page.evaluate(() => {
-    const canvas = (document.getElementById('v') as Viewer).shadowRoot?.querySelector('canvas');
+/**
+ * The canvas's layout size (its own CSS pixels), its bounding rectangle in its document (the page's,
+ * or an iframe's: `frame`) and its bitmap's size.
+ */
+async function canvasLayout(frame: Frame): Promise<Layout> {
+  return frame.evaluate(() => {
+    const canvas = document.querySelector('subdiv-viewer')?.shadowRoot?.querySelector('canvas');
     if (!canvas) throw new Error('no canvas');
     const r = canvas.getBoundingClientRect();
     return {
@@ -118,55 +132,53 @@ interface Layout {
 }
 
 /** Waits until the view has followed its canvas's size (a resize observer, a frame later) and drawn. */
-async function waitForSize(page: Page): Promise<Layout> {
+async function waitForSize(frame: Frame): Promise<Layout> {
   await expect
     .poll(async () => {
-      const c = await canvasLayout(page);
+      const c = await canvasLayout(frame);
       return c.bitmap[0] === c.width && c.bitmap[1] === c.height;
     })
     .toBe(true);
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-  return canvasLayout(page);
+  await frame.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  return canvasLayout(frame);
 }
 
-async function waitForView(page: Page): Promise<void> {
+/** Waits until the viewer in `frame` shows level 1 from {@link VIEW}, idle, at its size. */
+async function waitForView(frame: Frame): Promise<void> {
   await expect
     .poll(() =>
-      page.evaluate(() => {
-        const e = document.getElementById('v') as Viewer;
-        return e.level === 1 && !e.state?.busy && e.getView().position.join(',');
+      frame.evaluate(() => {
+        const e = document.querySelector('subdiv-viewer') as Viewer;
+        return e.level === 1 && !e.state?.busy && e.getView()?.position.join(',');
       }),
     )
     .toBe(VIEW.position.join(','));
-  await waitForSize(page);
+  await waitForSize(frame);
 }
 
 /**
  * Clicks each visible corner where `toPage` puts its projection (canvas pixels → page pixels, with
- * the canvas's layout `c`) and returns the vertex the element picked after each click (its `vertex`
- * attribute; null: none yet). The caption grows with the first pick (its colour bar), and the canvas
- * shrinks: each corner is projected into the canvas as it is when clicked.
+ * the canvas's layout `c` in `frame`) and returns the vertex the element picked after each click
+ * (its `vertex` attribute; null: none yet). The caption grows with the first pick (its colour bar)
+ * and the canvas shrinks: each corner is projected into the canvas as it is when clicked.
  */
 async function clickCorners(
   page: Page,
   toPage: (x: number, y: number, c: Layout) => [number, number],
+  frame: Frame = page.mainFrame(),
 ): Promise<(number | null)[]> {
   const picked: (number | null)[] = [];
   for (const v of VISIBLE) {
-    const c = await waitForSize(page);
+    const c = await waitForSize(frame);
     const [x, y] = project(CORNERS[v], c.width, c.height);
     await page.mouse.click(...toPage(x, y, c));
-    const attribute = await page.locator('#v').getAttribute('vertex');
+    const attribute = await frame.locator('subdiv-viewer').getAttribute('vertex');
     picked.push(attribute === null ? null : Number(attribute));
-    // The basis function of that vertex is shown before the next click.
+    // The basis function of that vertex is shown (its caption) before the next click.
     if (attribute === String(v))
       await expect
-        .poll(() =>
-          page.evaluate(
-            () => (window.__events ?? []).filter((e) => e.type === 'basis' && e.id === 'v').at(-1)?.detail.vertex,
-          ),
-        )
-        .toBe(v);
+        .poll(() => frame.locator('subdiv-viewer').locator('[part="tool"]').textContent())
+        .toContain(`Basis function of control vertex ${v}: reaches `);
   }
   return picked;
 }
@@ -185,8 +197,8 @@ test('on a plain page the seven visible control vertices are picked where this t
     viewerPage('Plain', 'body{margin:0 16px} #v{width:800px;height:480px}', ELEMENT),
   );
   await page.goto('./e2e/slides-plain.html');
-  await waitForView(page);
-  const c = await canvasLayout(page);
+  await waitForView(page.mainFrame());
+  const c = await canvasLayout(page.mainFrame());
   // clientHeight is a whole number; the box may be a fraction taller.
   expect(c.rect[0]).toBeCloseTo(c.width, 0);
   expect(c.rect[1]).toBeCloseTo(c.height, 0);
@@ -200,11 +212,11 @@ test('a reveal.js deck scales its slide by about 0.72 (a CSS transform): the sam
   await serveReveal(page);
   await embed.serve('e2e/slides-deck.html', deck());
   await page.goto('./e2e/slides-deck.html');
-  await waitForView(page);
+  await waitForView(page.mainFrame());
   // reveal.js fits 1280 × 720 into 90 % of 1024 × 700 (margin 0.1): min(921.6 / 1280, 630 / 720), to 0.01.
   const scale = await page.evaluate(() => (window as unknown as { Reveal: { getScale(): number } }).Reveal.getScale());
   expect(scale).toBe(0.72);
-  const c = await canvasLayout(page);
+  const c = await canvasLayout(page.mainFrame());
   expect(c.rect[0]).toBeCloseTo(scale * c.width, 3);
   // clientHeight is a whole number; the box may be a fraction taller.
   expect(c.rect[1] / scale).toBeCloseTo(c.height, 0);
@@ -212,6 +224,13 @@ test('a reveal.js deck scales its slide by about 0.72 (a CSS transform): the sam
   await page.screenshot({ path: '/tmp/shots/slides/deck-scaled-picked.png' });
   expect(picked).toEqual(VISIBLE);
   await expect.poll(() => embed.caption('v')).toContain('Basis function of control vertex 7');
+  // reveal.js centres a slide's text; the caption keeps its own alignment, with its colour bar.
+  const align = await page
+    .locator('#v')
+    .locator('.tool-line')
+    .first()
+    .evaluate((e) => getComputedStyle(e).textAlign);
+  expect(align).toBe('start');
 });
 
 test('CSS zoom 1.25 on the slide, inside the scaled deck: the same seven vertices are picked', async ({
@@ -221,13 +240,39 @@ test('CSS zoom 1.25 on the slide, inside the scaled deck: the same seven vertice
   await serveReveal(page);
   await embed.serve('e2e/slides-zoom.html', deck({ zoom: 1.25 }));
   await page.goto('./e2e/slides-zoom.html');
-  await waitForView(page);
+  await waitForView(page.mainFrame());
   const scale = await page.evaluate(() => (window as unknown as { Reveal: { getScale(): number } }).Reveal.getScale());
   const total = scale * 1.25;
-  const c = await canvasLayout(page);
+  const c = await canvasLayout(page.mainFrame());
   expect(c.rect[0]).toBeCloseTo(total * c.width, 3);
   const picked = await clickCorners(page, (x, y, c) => [c.left + total * x, c.top + total * y]);
   await page.screenshot({ path: '/tmp/shots/slides/deck-zoomed-picked.png' });
+  expect(picked).toEqual(VISIBLE);
+});
+
+test('the iframe route on the scaled slide: the same seven vertices are picked', async ({ embed, page }) => {
+  await serveReveal(page);
+  await embed.serve('e2e/slides-iframe.html', deck({ iframe: true }));
+  await page.goto('./e2e/slides-iframe.html');
+  await expect.poll(() => page.frame({ url: /embed\.html/ }) !== null).toBe(true);
+  const frame = page.frame({ url: /embed\.html/ });
+  if (!frame) throw new Error('no frame');
+  await waitForView(frame);
+  const scale = await page.evaluate(() => (window as unknown as { Reveal: { getScale(): number } }).Reveal.getScale());
+  expect(scale).toBe(0.72);
+  const box = await page.evaluate(() => {
+    const r = document.querySelector('iframe')?.getBoundingClientRect();
+    return r && { left: r.left, top: r.top, width: r.width };
+  });
+  if (!box) throw new Error('no iframe');
+  expect(box.width).toBeCloseTo(scale * 800, 3);
+  // The frame's own pixels are the slide's: its page point is its corner + scale × the point in it.
+  const picked = await clickCorners(
+    page,
+    (x, y, c) => [box.left + scale * (c.left + x), box.top + scale * (c.top + y)],
+    frame,
+  );
+  await page.screenshot({ path: '/tmp/shots/slides/deck-iframe-picked.png' });
   expect(picked).toEqual(VISIBLE);
 });
 
@@ -246,9 +291,9 @@ test('a figure turned by 8° and scaled by 0.75 (transform-origin 0 0): the same
     ),
   );
   await page.goto('./e2e/slides-turned.html');
-  await waitForView(page);
+  await waitForView(page.mainFrame());
   // The canvas's place in the figure, measured before the figure turns.
-  const flat = await canvasLayout(page);
+  const flat = await canvasLayout(page.mainFrame());
   await page.evaluate(
     ([t, k]) => {
       (document.getElementById('figure') as HTMLElement).style.transform = `rotate(${t}rad) scale(${k})`;
@@ -277,14 +322,14 @@ test('a drag on a slide the deck rescaled after the viewer started turns the mod
   await serveReveal(page);
   await embed.serve('e2e/slides-drag.html', deck());
   await page.goto('./e2e/slides-drag.html');
-  await waitForView(page);
+  await waitForView(page.mainFrame());
   // A presenter's larger window: reveal.js scales the slide up; the viewer's own size does not change.
   await page.setViewportSize({ width: 1280, height: 800 });
   const reveal = () => page.evaluate(() => (window as unknown as { Reveal: { getScale(): number } }).Reveal.getScale());
   // min(0.9 · 1280 / 1280, 0.9 · 800 / 720), up from 0.72.
   await expect.poll(reveal).toBe(0.9);
   const scale = await reveal();
-  const c = await canvasLayout(page);
+  const c = await canvasLayout(page.mainFrame());
   expect(c.rect[0]).toBeCloseTo(scale * c.width, 3);
   // 100 of the canvas's own pixels to the right along its middle row.
   const [x0, y0] = [c.left + scale * (c.width / 2 - 50), c.top + scale * (c.height / 2)];
@@ -298,8 +343,48 @@ test('a drag on a slide the deck rescaled after the viewer started turns the mod
   await expect
     .poll(async () => {
       const view = await page.evaluate(() => (document.getElementById('v') as Viewer).getView());
+      if (!view) return Number.NaN;
       const after = unit(sub(view.position as Vec, view.target as Vec));
       return Math.acos(Math.min(1, dot(before, after)));
     })
     .toBeCloseTo(expected, 3);
+});
+
+test('the app scaled to 0.8 (a transform on its body): the test API puts each vertex where the browser draws it; a click there picks it', async ({
+  app,
+}) => {
+  await app.open();
+  await app.openSample('torus', 'torus.off');
+  await app.subdivide();
+  await app.byTestId('basis.toggle').click();
+  await expect(app.byTestId('controls.overlay-control')).toBeChecked();
+  await app.page.evaluate(() => {
+    document.body.style.transformOrigin = '0 0';
+    document.body.style.transform = 'scale(0.8)';
+  });
+  await app.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const seen = await app.page.evaluate(() => {
+    const api = window.__subdivlab;
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="viewer"] canvas.subdiv-canvas');
+    if (!api || !canvas) throw new Error('no app');
+    const r = canvas.getBoundingClientRect();
+    const projected = api.projected(0);
+    return {
+      rect: { left: r.left, top: r.top, width: r.width, layoutWidth: canvas.clientWidth },
+      projected,
+      onScreen: projected.map((_, v) => api.vertexOnScreen(v)),
+    };
+  });
+  expect(seen.rect.width).toBeCloseTo(0.8 * seen.rect.layoutWidth, 3);
+  // Each control vertex: the canvas's corner in the page + 0.8 × its place in the canvas (the camera's projection).
+  expect(seen.projected.length).toBeGreaterThan(0);
+  seen.projected.forEach((p, v) => {
+    const at = seen.onScreen[v];
+    expect(at?.x).toBeCloseTo(seen.rect.left + 0.8 * p.x, 3);
+    expect(at?.y).toBeCloseTo(seen.rect.top + 0.8 * p.y, 3);
+  });
+  const at = seen.onScreen[0];
+  if (!at) throw new Error('control vertex 0 is not in view');
+  await app.page.mouse.click(at.x, at.y);
+  await expect(app.byTestId('basis.reach')).toHaveText(/^Control vertex 0 reaches 25 of the 192 vertices of level 1 /);
 });

@@ -8,6 +8,8 @@ export const EMBED_CSS = `
   min-height: 120px;
   color-scheme: light dark;
   font: 13px/1.35 system-ui, -apple-system, 'Segoe UI', Roboto, sans-serif;
+  /* A slide deck centres its text (reveal.js): the caption's lines stay aligned with its colour bar. */
+  text-align: start;
   color: #1f2933;
   background: #f3f4f6;
   border-radius: 6px;
