@@ -388,3 +388,21 @@ test('the app scaled to 0.8 (a transform on its body): the test API puts each ve
   await app.page.mouse.click(at.x, at.y);
   await expect(app.byTestId('basis.reach')).toHaveText(/^Control vertex 0 reaches 25 of the 192 vertices of level 1 /);
 });
+
+test('Fit in the app turned by 4° and scaled by 0.8 keeps the model clear of the facts panel as on the plain page', async ({
+  app,
+}) => {
+  await app.open();
+  await app.openSample('torus', 'torus.off');
+  // Fit shifts the picture right of the facts panel (data-covers-view) by the panel's width in the canvas's pixels.
+  const plain = (await app.state()).viewOffset;
+  expect(plain[0]).toBeGreaterThan(0.1);
+  await app.page.evaluate(() => {
+    document.body.style.transformOrigin = '0 0';
+    document.body.style.transform = 'rotate(4deg) scale(0.8)';
+  });
+  await app.byTestId('view.fit').click();
+  const turned = (await app.state()).viewOffset;
+  expect(turned[0]).toBeCloseTo(plain[0], 3);
+  expect(turned[1]).toBeCloseTo(plain[1], 3);
+});

@@ -123,10 +123,7 @@ export class AppTools {
     this.sidePanel.update(this.sideBySide.state, false);
     this.inspector3d = new MeshInspector(this.host.viewer, (error) => this.host.modelError(error));
     this.inspectPanel = new InspectPanel({
-      onChoice: (choice, layer, on) => {
-        this.inspector3d.setChoices({ [choice]: on });
-        this.inspector3d.setLayers({ [layer]: on });
-      },
+      onChoice: (choice, layer, on) => void this.inspector3d.show(choice, layer, on),
       onInspect: () => void this.inspector3d.inspect(),
       onFrame: (pair) => this.inspector3d.frame(pair),
     });

@@ -4,8 +4,10 @@
  * figures at once; once the user inspected, each level shown next is
  * inspected with the same choices. Level 0's measures are kept too, for
  * how much a scheme changes area, volume and size. The results are drawn
- * over the surface (render/inspect-graphics.ts), and a pair of crossing
- * faces can be framed.
+ * over the surface (render/inspect-graphics.ts). It starts with the
+ * self-intersections alone (the sphere, hull and planes would bury the red
+ * faces); a box ticked later computes its figure then. What the user asks
+ * for is framed: the crossing faces and the layers shown, or a pair.
  */
 import { Sphere, Vector3 } from 'three';
 import type { Inspection, InspectOptions, MeshMeasures } from '../core/inspect';
@@ -35,8 +37,8 @@ export interface InspectorState {
 const LISTED_PAIRS = 100;
 
 export class MeshInspector {
-  private choices: InspectChoices = { selfIntersections: true, sphere: true, hull: true, width: true };
-  private layers: InspectLayers = { intersections: true, sphere: true, hull: true, width: true };
+  private choices: InspectChoices = { selfIntersections: true, sphere: false, hull: false, width: false };
+  private layers: InspectLayers = { intersections: true, sphere: false, hull: false, width: false };
   /** Inspections by level object (viewer.levelId): a recomputed level has another. */
   private readonly results = new Map<number, Inspection>();
   private control: { faces: Uint32Array; measures: MeshMeasures } | null = null;
@@ -50,6 +52,8 @@ export class MeshInspector {
   private graphics: InspectGraphics | null = null;
   /** What the drawn graphics show (level id, framed pair, layers). */
   private drawnKey = '';
+  /** The inspection the drawn graphics show (a figure computed later makes another). */
+  private drawnResult: Inspection | null = null;
   private readonly listeners = new Set<(state: InspectorState) => void>();
 
   constructor(
@@ -68,8 +72,9 @@ export class MeshInspector {
       const live = new Set(Array.from({ length: state.levelCount }, (_, k) => viewer.levelId(k)));
       for (const id of this.results.keys()) if (!live.has(id)) this.results.delete(id);
       if (this.framed && this.framedId !== viewer.levelId()) this.framed = null;
+      // Scrubbing keeps the camera where the user has it.
       if (this.active && !state.busy && !this.busy && state.levelCount > 0 && !this.results.has(viewer.levelId()))
-        void this.inspect();
+        void this.inspect(false);
       this.draw();
       this.emit();
     });
@@ -95,19 +100,26 @@ export class MeshInspector {
     return () => this.listeners.delete(listener);
   }
 
-  setChoices(choices: Partial<InspectChoices>): void {
-    this.choices = { ...this.choices, ...choices };
-    this.emit();
-  }
-
-  setLayers(layers: Partial<InspectLayers>): void {
-    this.layers = { ...this.layers, ...layers };
+  /**
+   * Shows or hides a figure (`choice`, drawn as `layer`): one the shown
+   * level was inspected without is computed now; the view frames what is
+   * then drawn.
+   */
+  async show(choice: keyof InspectChoices, layer: keyof InspectLayers, on: boolean): Promise<void> {
+    this.choices = { ...this.choices, [choice]: on };
+    this.layers = { ...this.layers, [layer]: on };
+    const result = this.results.get(this.viewer.levelId());
+    if (on && result && result[choice] === undefined && !this.busy) return this.inspect();
     this.draw();
+    if (result) this.frameShown();
     this.emit();
   }
 
-  /** Inspects the shown level with the choices (again, when they changed); the levels shown next follow. */
-  async inspect(): Promise<void> {
+  /**
+   * Inspects the shown level for the chosen figures it lacks (the levels
+   * shown next follow) and, with `frame`, frames what is drawn.
+   */
+  async inspect(frame = true): Promise<void> {
     const viewer = this.viewer;
     if (viewer.state.levelCount === 0) return;
     this.active = true;
@@ -122,8 +134,11 @@ export class MeshInspector {
         const measures = (await viewer.inspect(0, {}))?.measures;
         if (measures && viewer.controlMesh?.faceIndices === faces) this.control = { faces, measures };
       }
-      const result = await viewer.inspect(level, { ...this.choices, maxPairs: LISTED_PAIRS });
-      if (result && viewer.levelId(level) === id) this.results.set(id, result);
+      const kept = this.results.get(id);
+      const wanted = { ...this.choices };
+      for (const key of Object.keys(wanted) as (keyof InspectChoices)[]) wanted[key] &&= kept?.[key] === undefined;
+      const result = await viewer.inspect(level, { ...wanted, maxPairs: LISTED_PAIRS });
+      if (result && viewer.levelId(level) === id) this.results.set(id, { ...kept, ...result });
     } catch (error) {
       if (error instanceof CancelledError) {
         this.active = false;
@@ -135,8 +150,21 @@ export class MeshInspector {
     } finally {
       this.busy = false;
       this.draw();
+      if (frame && viewer.levelId() === id && this.results.has(id)) this.frameShown();
       this.emit();
     }
+  }
+
+  /**
+   * Frames what is drawn (the crossing faces, the sphere, the hull, the
+   * planes), looking from where the camera looks; the whole level when
+   * nothing is.
+   */
+  private frameShown(): void {
+    const points = this.graphics?.points;
+    const view = this.viewer.view;
+    if (points && points.length > 0) view.fitPoints([points], view.lookDirection());
+    else this.viewer.fitView('current');
   }
 
   /** Frames crossing faces `a` and `b` of the shown level, drawn darker; null: none framed. */
@@ -162,8 +190,9 @@ export class MeshInspector {
     const result = this.results.get(this.viewer.levelId()) ?? null;
     const buffers = this.viewer.buffersOf(this.viewer.state.level);
     const key = result ? `${this.viewer.levelId()}:${this.framed}:${JSON.stringify(this.layers)}` : '';
-    if (key === this.drawnKey) return;
+    if (key === this.drawnKey && result === this.drawnResult) return;
     this.drawnKey = key;
+    this.drawnResult = result;
     this.graphics?.dispose();
     this.graphics = result && buffers ? new InspectGraphics(result, buffers, this.layers, this.framed) : null;
     this.viewer.view.setExtras(this.graphics?.group ?? null);

@@ -1,10 +1,10 @@
 /**
  * What Inspect draws over a level: the self-intersecting faces in red (a
- * framed pair darker), the smallest enclosing sphere as a translucent ball,
+ * framed pair darker; seen through the surface, fainter), the smallest enclosing sphere as a translucent ball,
  * the convex hull as a wireframe, and the minimum width's two parallel
  * planes as translucent squares. Built from the inspection and the level's
  * render buffers; the caller shows the group (SceneView.setExtras) and
- * disposes it.
+ * disposes it, and frames its points (SceneView.fitPoints).
  */
 import {
   BufferGeometry,
@@ -44,12 +44,39 @@ export interface InspectLayers {
 
 export class InspectGraphics {
   readonly group = new Group();
+  /**
+   * Points (xyz each) that hold what is drawn, for framing it: the crossing
+   * faces' corners, the sphere's box, the hull's vertices, the planes'
+   * corners. Empty when nothing is drawn.
+   */
+  readonly points: Float32Array;
 
   /** `framed`: a pair of faces drawn darker (the one the panel framed), or null. */
   constructor(inspection: Inspection, buffers: RenderBuffers, layers: InspectLayers, framed: [number, number] | null) {
+    const points: ArrayLike<number>[] = [];
     const pairs = inspection.selfIntersections;
     if (layers.intersections && pairs && pairs.faces.length > 0) {
-      this.group.add(facesMesh(buffers, new Set(pairs.faces), INSPECT_COLORS.intersecting, 1));
+      const faces = facesMesh(buffers, new Set(pairs.faces), INSPECT_COLORS.intersecting, 1);
+      // Faces that cross mostly lie inside the surface (the part that went through it): drawn through
+      // the surface too, fainter, so that a student sees where they are.
+      const hidden = new Mesh(
+        faces.geometry,
+        new MeshBasicMaterial({
+          color: INSPECT_COLORS.intersecting,
+          side: DoubleSide,
+          transparent: true,
+          opacity: 0.45,
+          depthTest: false,
+          depthWrite: false,
+        }),
+      );
+      hidden.renderOrder = 1.5;
+      this.group.add(faces, hidden);
+      const corners = faces.geometry.index?.array ?? [];
+      const xyz = new Float32Array(3 * corners.length);
+      for (let k = 0; k < corners.length; ++k)
+        xyz.set(buffers.positions.subarray(3 * corners[k], 3 * corners[k] + 3), 3 * k);
+      points.push(xyz);
       if (framed) this.group.add(facesMesh(buffers, new Set(framed), INSPECT_COLORS.framed, 2));
     }
     const sphere = inspection.sphere;
@@ -61,6 +88,11 @@ export class InspectGraphics {
       ball.position.fromArray(sphere.center);
       ball.renderOrder = 5;
       this.group.add(ball);
+      // The eight corners of the sphere's box.
+      const [x, y, z] = sphere.center;
+      const r = sphere.radius;
+      for (const sx of [-r, r])
+        for (const sy of [-r, r]) for (const sz of [-r, r]) points.push([x + sx, y + sy, z + sz]);
     }
     const hull = inspection.hull;
     if (layers.hull && hull) {
@@ -81,6 +113,7 @@ export class InspectGraphics {
       const lines = new LineSegments(geometry, new LineBasicMaterial({ color: INSPECT_COLORS.hull }));
       lines.renderOrder = 4;
       this.group.add(lines);
+      points.push(hull.positions);
     }
     const width = inspection.width;
     if (layers.width && width && !width.skipped) {
@@ -104,9 +137,20 @@ export class InspectGraphics {
         plane.position.copy(centre).addScaledVector(normal, offset - centre.dot(normal));
         plane.renderOrder = 6;
         this.group.add(plane);
+        plane.updateMatrixWorld();
+        const corners = plane.geometry.getAttribute('position');
+        for (let k = 0; k < corners.count; ++k) {
+          points.push(new Vector3().fromBufferAttribute(corners, k).applyMatrix4(plane.matrixWorld).toArray());
+        }
       }
     }
     for (const child of this.group.children) child.frustumCulled = false;
+    this.points = new Float32Array(points.reduce((n, p) => n + p.length, 0));
+    let at = 0;
+    for (const p of points) {
+      this.points.set(p, at);
+      at += p.length;
+    }
   }
 
   dispose(): void {

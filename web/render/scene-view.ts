@@ -350,6 +350,26 @@ export class SceneView {
       // As the level's, a Float32Array: one kind of array keeps fitCamera's loops fast.
       if (!box.isEmpty()) points.push(new Float32Array([...box.min.toArray(), ...box.max.toArray()]));
     }
+    this.fitTo(points, view, false);
+  }
+
+  /**
+   * Frames `points` (xyz each) alone, as {@link fit} frames what is shown: a
+   * tool's part of the model (Inspect's crossing faces). The clipping planes
+   * still reach the whole model.
+   */
+  fitPoints(
+    points: readonly ArrayLike<number>[],
+    view?: { direction: readonly number[]; up: readonly number[] },
+  ): void {
+    this.fitTo(points, view, true);
+  }
+
+  private fitTo(
+    points: readonly ArrayLike<number>[],
+    view: { direction: readonly number[]; up: readonly number[] } | undefined,
+    part: boolean,
+  ): void {
     const direction = view ? new Vector3().fromArray(view.direction) : DEFAULT_VIEW_DIRECTION.clone();
     const up = new Vector3().fromArray(view?.up ?? [0, 1, 0]);
     const { width, height } = this.size;
@@ -369,7 +389,7 @@ export class SceneView {
     if (!fitted) return;
     this.offset = fitted.offset;
     this.applyOffset();
-    this.radius = Math.max(fitted.radius, 1e-9);
+    this.radius = Math.max(fitted.radius, part ? this.radius : 1e-9);
     this.setView({
       position: fitted.position.toArray(),
       target: fitted.target.toArray(),
