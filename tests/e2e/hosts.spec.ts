@@ -165,7 +165,9 @@ test.describe('a host without CORS headers', () => {
 <subdiv-viewer id="b" src="cube.off" beside="loop sqrt3" style="width:420px;height:200px"></subdiv-viewer>
 <script>
   window.__errors = [];
-  document.addEventListener('error', (e) => window.__errors.push({ id: e.target.id, detail: e.detail }), true);
+  document.addEventListener('error', (e) => {
+    if (e.target.localName === 'subdiv-viewer') window.__errors.push({ id: e.target.id, detail: e.detail });
+  });
 </script>`;
     const course = await startHost({
       cors: false,
@@ -274,6 +276,10 @@ test('an element and an iframe of embed.html on one page fetch three.js once', a
   });
   try {
     await page.goto(`${course.origin}/lesson.html`);
+    // The loader's module script holds the load event: the element is defined when goto returns.
+    expect(
+      await page.locator('#x').evaluate((e) => typeof (e as HTMLElementTagNameMap['subdiv-viewer']).setLevel),
+    ).toBe('function');
     const reading = await waitForLevelIn(page, 'x', 2);
     expect(reading.facts).toMatchObject({ ...expectedClosedCounts('loop', TETRAHEDRON, 2) });
     const frame = page.frame({ url: /embed\.html/ });

@@ -1,10 +1,10 @@
 /**
  * dist/embed/subdiv-viewer.js, the file a page includes: a small classic
  * script (no import or export, so `<script src>` and `<script type="module"
- * src>` both run it) that imports the element's module beside it. A module
- * from another host needs CORS, where a classic script does not: on a host
- * that sends no `Access-Control-Allow-Origin`, the import fails, and this
- * script defines `<subdiv-viewer>` as a box saying so, with the iframe route
+ * src>` both run it) that adds the element's module beside it to the page.
+ * A module from another host needs CORS, where a classic script does not: on
+ * a host that sends no `Access-Control-Allow-Origin`, the module fails, and
+ * this script defines `<subdiv-viewer>` as a box saying so, with the iframe route
  * (`embed.html`, which needs no CORS) as the way round. Nothing else stays
  * empty: each element shows the box and fires `error`.
  *
@@ -24,13 +24,25 @@
     message: string;
   }
 
+  const current = document.currentScript instanceof HTMLScriptElement ? document.currentScript : null;
   const scriptUrl = ownUrl();
   const moduleUrl = new URL(ELEMENT_MODULE, scriptUrl).href;
-  import(moduleUrl).catch(async (error: unknown) => {
+  // A module script element rather than import(): while it loads it holds the page's load
+  // event, so the element is defined by then, as when pages included the module itself.
+  const module = document.createElement('script');
+  module.type = 'module';
+  module.src = moduleUrl;
+  if (current?.nonce) module.nonce = current.nonce;
+  module.addEventListener('error', () => void unavailable('the browser did not load it'));
+  // Loaded and run, but no element: it failed while running (the console says why).
+  module.addEventListener('load', () => void unavailable('it stopped while running'));
+  document.head.append(module);
+
+  async function unavailable(said: string): Promise<void> {
     if (customElements.get('subdiv-viewer')) return;
-    const unavailable = await diagnose(moduleUrl, error);
-    if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', unavailableElement(unavailable));
-  });
+    const why = await diagnose(moduleUrl, said);
+    if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', unavailableElement(why));
+  }
 
   /**
    * This script's URL: `document.currentScript` as a classic script; as a
@@ -38,8 +50,7 @@
    * the URL in a stack trace, which every browser writes.
    */
   function ownUrl(): string {
-    const current = document.currentScript;
-    if (current instanceof HTMLScriptElement && current.src) return current.src;
+    if (current?.src) return current.src;
     for (const script of document.querySelectorAll<HTMLScriptElement>('script[src]')) {
       if (/\/subdiv-viewer\.js([?#]|$)/.test(script.src)) return script.src;
     }
@@ -52,9 +63,8 @@
    * CORS request that fails while a no-cors one gets an answer means the
    * server is there and sends no `Access-Control-Allow-Origin`.
    */
-  async function diagnose(url: string, error: unknown): Promise<Unavailable> {
+  async function diagnose(url: string, said: string): Promise<Unavailable> {
     const host = new URL(url).origin;
-    const said = error instanceof Error ? error.message : String(error);
     try {
       const response = await fetch(url, { cache: 'no-store' });
       if (!response.ok) {
@@ -64,8 +74,11 @@
         };
       }
       return {
-        lines: [`The SubdivLab module ${url} did not run in this browser (${said}).`],
-        message: `The SubdivLab module ${url} did not run: ${said}`,
+        lines: [
+          `The SubdivLab module ${url} did not run on this page: ${said}.`,
+          `If the page has a Content-Security-Policy, its script-src must allow ${host}.`,
+        ],
+        message: `The SubdivLab module ${url} did not run: ${said}.`,
       };
     } catch {
       const answered = await fetch(url, { mode: 'no-cors', cache: 'no-store' }).then(
