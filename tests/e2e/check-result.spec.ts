@@ -22,6 +22,23 @@ function plainCube(): PlainMesh {
   };
 }
 
+/**
+ * OBJ text of the vertices in reverse order, with comments and blank lines among them, and the line each vertex
+ * was written on (1-based), as the test knows it.
+ */
+function reversedObj(mesh: PlainMesh): { text: string; lineOf: number[] } {
+  const n = mesh.points.length;
+  const lines = ['# my Catmull-Clark, level 2', '', 'o cube'];
+  const lineOf: number[] = [];
+  [...mesh.points].reverse().forEach((p, v) => {
+    if (v % 10 === 0) lines.push('', `# vertices ${v} to ${v + 9}`);
+    lines.push(`v ${p.join(' ')}`);
+    lineOf.push(lines.length);
+  });
+  for (const f of mesh.faces) lines.push(`f ${f.map((v) => n - v).join(' ')}`);
+  return { text: `${lines.join('\n')}\n`, lineOf };
+}
+
 /** OFF text with the vertices written in reverse order, as another program might. */
 function reversedOff(mesh: PlainMesh): string {
   const n = mesh.points.length;
@@ -63,12 +80,29 @@ test("a student's Catmull-Clark level 2: a match, then one moved vertex named, c
     '1 vertex of 98 is farther from the reference than the tolerance',
   );
   await expect(app.byTestId('check.worst').locator('li')).toHaveCount(1);
-  await expect(app.byTestId('check.worst').locator('li').first()).toContainText('Your vertex 30: 0.100 off');
+  // Vertex 30 of the file is on line 33: after "OFF" and the counts, one vertex a line.
+  await expect(app.byTestId('check.worst').locator('li').first()).toContainText('Your vertex 30 (line 33): 0.100 off');
   await expect.poll(async () => (await app.canvasPixels()).equals(plain)).toBe(false);
   await app.snapshot('check-result-mismatch');
   await app.byTestId('check.worst').getByRole('button', { name: 'its stencil' }).click();
   await expect(app.byTestId('stencils.inspect')).toHaveAttribute('aria-pressed', 'true');
   await expect(app.byTestId('stencils.title')).toHaveText(/^Vertex \d+ of level 2$/);
+
+  await test.step('the same as OBJ, with comments and blank lines: its line and its OBJ number (from 1)', async () => {
+    const obj = reversedObj(moved);
+    await app.byTestId('check.file').setInputFiles({
+      name: 'my-cc2-moved.obj',
+      mimeType: 'text/plain',
+      buffer: Buffer.from(obj.text),
+    });
+    await app.byTestId('check.run').click();
+    await expect(app.byTestId('check.verdict')).toHaveText('✗ my-cc2-moved.obj is not level 2.');
+    expect(obj.lineOf[30]).toBe(42);
+    await expect(app.byTestId('check.worst').locator('li').first()).toContainText(
+      `Your vertex 30 (line ${obj.lineOf[30]}, OBJ v 31): 0.100 off`,
+    );
+    await app.panelSnapshot('check-panel', 'check-result-vertex-lines');
+  });
 });
 
 /** Binary little-endian PLY of `mesh` (double coordinates, uchar counts, int indices), as another program might write it. */

@@ -19,8 +19,13 @@ export interface MeshComparison {
   diagonal: number;
   maxError: number;
   meanError: number;
-  /** The worst vertices (the result's numbers), largest error first, with the reference vertex each was matched to. */
-  worst: { vertex: number; reference: number; error: number }[];
+  /**
+   * The worst vertices (the result's numbers), largest error first, with the reference vertex each was matched
+   * to; for OFF and OBJ also the line each is on and its number in the file (vertex-lines.ts).
+   */
+  worst: { vertex: number; reference: number; error: number; line?: number; fileVertex?: number }[];
+  /** How the result's file numbers its vertices (OFF from 0, OBJ from 1); absent for PLY and STL. */
+  fileFormat?: 'off' | 'obj';
   /** Per result vertex: the reference vertex it was matched to, and their distance. */
   matched: Uint32Array;
   errors: Float64Array;

@@ -32,6 +32,7 @@ import {
   viewMesh,
 } from './subdiv-core';
 import { SubdivError } from './subdiv-error';
+import { vertexSources } from './vertex-lines';
 import type {
   CrashKind,
   LevelData,
@@ -193,7 +194,14 @@ const handlers: Handlers = {
   },
   async compare({ handle, text, format, tolerance }) {
     await init();
-    const comparison = compareMeshes(keptLevel(handle).mesh, parseMesh(text, format), tolerance);
+    const result = parseMesh(text, format);
+    const comparison = compareMeshes(keptLevel(handle).mesh, result, tolerance);
+    // The worst vertices as the file has them: their lines and numbers there.
+    const sources = vertexSources(text, format);
+    if (sources && sources.vertices.length === result.positions.length / 3) {
+      comparison.fileFormat = sources.format;
+      for (const w of comparison.worst) Object.assign(w, sources.vertices[w.vertex]);
+    }
     return { value: comparison, transfer: [comparison.matched.buffer, comparison.errors.buffer] };
   },
   async hausdorff({ a, b }) {

@@ -4,6 +4,7 @@
  * vertices, each with a button that shows its expected stencil.
  */
 import type { ReadFormat } from '../core/mesh';
+import { vertexName } from '../core/vertex-lines';
 import type { CheckState } from '../teach/result-check';
 import { detectFormat } from '../viewer/mesh-source';
 import { button, el, section, uniqueId } from './dom';
@@ -125,7 +126,7 @@ export class CheckPanel {
             el(
               'li',
               {},
-              `Your vertex ${w.vertex}: ${number(w.error)} off `,
+              `Your ${vertexName(w, c.fileFormat)}: ${number(w.error)} off `,
               el('button', {
                 text: 'its stencil',
                 attrs: {
