@@ -374,6 +374,49 @@ TEST(FileKind, NonMeshFilesSayWhatTheyAreWhateverTheFormatAsked) {
             "SubdivLab reads OFF, OBJ, PLY and STL.");
 }
 
+TEST(FileKind, BinaryOrOtherFormatIsNamedNotQuoted) {
+  // Every byte value once: 28 control bytes and 128 bytes in no UTF-8
+  // sequence, 156 of 256. As OFF its first "line" was quoted as a header.
+  std::string all(256, '\0');
+  for (int i = 0; i < 256; ++i) all[i] = static_cast<char>(i);
+  // (As STL it is a binary STL cut short, which its reader says by byte.)
+  for (const auto& [format, name] :
+       {std::pair{Mesh_format::off, "OFF text"},
+        std::pair{Mesh_format::obj, "OBJ text"},
+        std::pair{Mesh_format::ply, "a PLY file"}}) {
+    EXPECT_EQ(read_error(all, format, Status_code::parse_error, 0),
+              std::string("This looks like a binary file, not ") + name +
+                  ": 156 of its first 256 bytes are control bytes or "
+                  "no UTF-8 text. SubdivLab reads OFF, OBJ, PLY and STL.");
+  }
+  // Files of another format under this one's extension.
+  EXPECT_EQ(read_error(fixture_text("tetrahedron-binary.stl"), Mesh_format::off,
+                       Status_code::parse_error, 0),
+            "This looks like a binary STL file, not OFF text: give it the "
+            ".stl extension to read it as STL.");
+  EXPECT_EQ(read_error(fixture_text("cube-le.ply"), Mesh_format::obj,
+                       Status_code::parse_error, 0),
+            "This looks like a PLY file, not OBJ: give it the .ply extension "
+            "to read it as PLY.");
+  EXPECT_EQ(read_error(fixture_text("cube.obj"), Mesh_format::off,
+                       Status_code::parse_error, 0),
+            "This looks like an OBJ file, not OFF: give it the .obj extension "
+            "to read it as OBJ.");
+  EXPECT_EQ(read_error(fixture_text("tetrahedron.stl"), Mesh_format::obj,
+                       Status_code::parse_error, 0),
+            "This looks like an STL file, not OBJ: give it the .stl extension "
+            "to read it as STL.");
+  // A text file with a stray byte stays text: the token is quoted, the
+  // byte that is no UTF-8 written as \xNN, not passed on raw.
+  EXPECT_EQ(read_error("OFF\n3 1 0\n0 0 \xFFz\n1 0 0\n0 1 0\n3 0 1 2\n",
+                       Mesh_format::off, Status_code::parse_error, 3),
+            "line 3: z coordinate of vertex 0 is not a number: '\\xFFz'");
+  // Errors in a file of the format keep their line.
+  EXPECT_EQ(read_error("OFF\n3 1 0\n0 0 q\n1 0 0\n0 1 0\n3 0 1 2\n",
+                       Mesh_format::off, Status_code::parse_error, 3),
+            "line 3: z coordinate of vertex 0 is not a number: 'q'");
+}
+
 TEST(FileKind, FormatFromContent) {
   const auto detected = [](const std::string& bytes) {
     const Result<Mesh_format> r = detect_format(bytes);

@@ -1,7 +1,8 @@
 /**
  * More formats, as a user meets them: a PLY and an STL dropped on the app
  * give their counts, a PNG dropped by mistake is named as a PNG with the
- * previous mesh kept, a cube with one face flipped offers "Repair
+ * previous mesh kept, binary bytes or a binary STL named .off are named as
+ * such rather than quoted, a cube with one face flipped offers "Repair
  * orientation", and the Export menu's PLY and STL files hold the shown
  * level with a comment naming model, scheme and level.
  */
@@ -35,6 +36,21 @@ test('PLY and STL dropped give their counts; a PNG is named and the mesh stays',
     await expect(app.byTestId('facts.model')).toHaveText('tetrahedron-binary.stl');
     expect((await app.state()).level).toBe(1);
     await app.snapshot('formats-png-refused');
+  });
+
+  await test.step('binary bytes named .off, a binary STL named .off: named, no bytes quoted', async () => {
+    // Every byte value once: 28 control bytes and 128 in no UTF-8 sequence.
+    await app.dropFile('scan.off', Buffer.from(Array.from({ length: 256 }, (_, i) => i)));
+    await expect(app.byTestId('error.message')).toHaveText(
+      'This looks like a binary file, not OFF text: 156 of its first 256 bytes are control bytes or no UTF-8 text. SubdivLab reads OFF, OBJ, PLY and STL.',
+    );
+    await expect(app.byTestId('error.source')).toContainText('scan.off');
+    await app.snapshot('formats-binary-refused');
+    await app.dropFile('part.off', await fixture('tetrahedron-binary.stl'));
+    await expect(app.byTestId('error.message')).toHaveText(
+      'This looks like a binary STL file, not OFF text: give it the .stl extension to read it as STL.',
+    );
+    await expect(app.byTestId('facts.model')).toHaveText('tetrahedron-binary.stl');
   });
 
   await test.step('an ASCII STL clears the message', async () => {

@@ -69,6 +69,26 @@ describe('PLY and STL bytes', () => {
     }
   });
 
+  it('a binary file, or a mesh of another format, is named, its bytes not quoted', () => {
+    // Every byte value once: 28 control bytes and 128 in no UTF-8 sequence.
+    const all = Uint8Array.from({ length: 256 }, (_, i) => i);
+    expect(failure(all, 'off').message).toBe(
+      'This looks like a binary file, not OFF text: 156 of its first 256 bytes are control bytes or no UTF-8 text. SubdivLab reads OFF, OBJ, PLY and STL.',
+    );
+    expect(failure(bytesOf('tetrahedron-binary.stl'), 'off').message).toBe(
+      'This looks like a binary STL file, not OFF text: give it the .stl extension to read it as STL.',
+    );
+    expect(failure(bytesOf('cube-le.ply'), 'obj').message).toBe(
+      'This looks like a PLY file, not OBJ: give it the .ply extension to read it as PLY.',
+    );
+    // Text with one stray byte is quoted, the byte as \xNN.
+    const stray = new TextEncoder().encode('OFF\n3 1 0\n0 0 #z\n1 0 0\n0 1 0\n3 0 1 2\n');
+    stray[stray.indexOf(35)] = 0xff;
+    const error = failure(stray, 'off');
+    expect(error.line).toBe(3);
+    expect(error.message).toBe("line 3: z coordinate of vertex 0 is not a number: '\\xFFz'");
+  });
+
   it('a binary PLY cut short names the byte and the face', () => {
     const le = bytesOf('cube-le.ply');
     const error = failure(le.subarray(0, le.length - 40), 'ply');

@@ -22,7 +22,55 @@ bool is_gltf_json(std::string_view bytes) {
   return bytes.substr(0, 4096).find("\"asset\"") != std::string_view::npos;
 }
 
+/// Length of the valid UTF-8 sequence at `p` (1 for ASCII), or 0 when the
+/// bytes there are none (a stray continuation byte, a lead byte without its
+/// continuations, or cut by `end`).
+std::size_t utf8_length(const unsigned char* p, const unsigned char* end) {
+  const unsigned char u = *p;
+  std::size_t n = 0;
+  if (u < 0x80) return 1;
+  if (u >= 0xC2 && u <= 0xDF)
+    n = 2;
+  else if (u >= 0xE0 && u <= 0xEF)
+    n = 3;
+  else if (u >= 0xF0 && u <= 0xF4)
+    n = 4;
+  else
+    return 0;
+  if (static_cast<std::size_t>(end - p) < n) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((p[k] & 0xC0) != 0x80) return 0;
+  return n;
+}
+
+bool is_control(unsigned char u) {
+  return (u < 0x20 && u != '\t' && u != '\n' && u != '\r' && u != '\f' &&
+          u != '\v') ||
+         u == 0x7F;
+}
+
 }  // namespace
+
+Text_share text_share(std::string_view bytes) {
+  Text_share share;
+  share.sample = std::min<std::size_t>(bytes.size(), 4096);
+  const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
+  const auto* end = p + share.sample;
+  while (p < end) {
+    const std::size_t n = utf8_length(p, end);
+    // A sequence cut by the sample's end is not counted against the file.
+    if (n == 0 && static_cast<std::size_t>(end - p) < 4 &&
+        share.sample < bytes.size())
+      break;
+    if (n == 0 || (n == 1 && is_control(*p))) ++share.non_text;
+    p += n == 0 ? 1 : n;
+  }
+  return share;
+}
+
+bool looks_binary(const Text_share& share) {
+  return share.sample > 0 && 10 * share.non_text >= share.sample;
+}
 
 std::string quoted(std::string_view tok) { return "'" + printable(tok) + "'"; }
 
@@ -35,14 +83,19 @@ std::string printable(std::string_view tok) {
        ++back)
     --n;
   std::string s;
-  for (const char c : tok.substr(0, n)) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7F) {
+  const auto* p = reinterpret_cast<const unsigned char*>(tok.data());
+  // Up to the end of the token, so that a sequence cut at n is whole here.
+  const auto* end = p + tok.size();
+  for (std::size_t i = 0; i < n;) {
+    const std::size_t k = utf8_length(p + i, end);
+    if (k == 0 || (k == 1 && (p[i] < 0x20 || p[i] == 0x7F))) {
       char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", u);
+      std::snprintf(buf, sizeof buf, "\\x%02X", p[i]);
       s += buf;
+      ++i;
     } else {
-      s += c;
+      s.append(tok.substr(i, k));
+      i += k;
     }
   }
   if (n < tok.size()) s += "...";

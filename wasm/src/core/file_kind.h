@@ -24,13 +24,26 @@ Status check_not_other_file(std::string_view bytes);
 
 /// A token of the file as messages quote it: at most 40 bytes, cut before a
 /// UTF-8 sequence rather than inside it, and control bytes (NUL, ESC ...)
-/// written as \xNN, so a file cannot put terminal escapes or a NUL into the
-/// one-line error a CLI prints.
+/// and bytes that are no UTF-8 text written as \xNN, so a file cannot put
+/// terminal escapes, a NUL or undecodable bytes into the one-line error a
+/// CLI prints.
 std::string quoted(std::string_view tok);
 
 /// quoted's text without the quotes (followed by "..." when cut), for a
 /// name a message shows bare (a PLY element's, a rule set's host).
 std::string printable(std::string_view tok);
+
+/// How much of `bytes` is not text: of its first `sample` bytes (at most
+/// 4 KiB), `non_text` are control bytes other than tab, line and page
+/// breaks, or bytes outside valid UTF-8 sequences. A file whose share is
+/// 10 % or more looks binary (looks_binary): compressed or random data
+/// has about a third, binary STL's floats many NULs, while text with one
+/// stray control byte stays text.
+struct Text_share {
+  std::size_t sample = 0, non_text = 0;
+};
+Text_share text_share(std::string_view bytes);
+bool looks_binary(const Text_share& share);
 
 /// The sentence naming the formats read, for messages.
 inline constexpr const char* formats_read =

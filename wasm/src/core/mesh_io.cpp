@@ -1362,6 +1362,58 @@ void write_tags(const Mesh_tags& tags, bool off, Chunk_writer& out) {
   }
 }
 
+/// Upper-case name of a format, for messages ("OFF").
+std::string format_label(Mesh_format format) {
+  std::string name = format_name(format);
+  for (char& c : name) c = static_cast<char>(c - 'a' + 'A');
+  return name;
+}
+
+/// A parse error that quotes a line of a file that is no text of `format`
+/// (a binary file, or a file of another format named with this one's
+/// extension) says what the file looks like instead of quoting its bytes
+/// as a bad header or number: "This looks like a binary STL file, not OFF
+/// text: ..." Errors of the format's own data (a binary PLY's byte
+/// offsets, line 0; its header's lines) and files of the format keep their
+/// message.
+Result<Mesh_buffers> name_misread_file(Result<Mesh_buffers>&& r,
+                                       std::string_view text,
+                                       Mesh_format format) {
+  if (r.status.code != Status_code::parse_error || r.status.line == 0)
+    return std::move(r);
+  const std::string asked = format_label(format);
+  const Result<Mesh_format> seen = detect_format(text);
+  std::string what;
+  if (seen.ok() && seen.value != format) {
+    const bool binary_stl =
+        seen.value == Mesh_format::stl && detail::is_binary_stl(text);
+    const std::string other = format_label(seen.value);
+    // "an OFF", "an OBJ", "an STL" (said letter by letter), "a PLY".
+    const std::string article = seen.value == Mesh_format::ply ? "a " : "an ";
+    what = "This looks like " +
+           (binary_stl ? "a binary STL" : article + other) + " file, not " +
+           asked + (binary_stl ? " text" : "") + ": give it the ." +
+           format_name(seen.value) + " extension to read it as " + other + ".";
+  } else {
+    // A PLY's header is text before data that may be binary: its messages
+    // quote the header.
+    if (format == Mesh_format::ply && text.substr(0, 3) == "ply")
+      return std::move(r);
+    const detail::Text_share share = detail::text_share(text);
+    if (!detail::looks_binary(share)) return std::move(r);
+    // PLY may be binary after its header: "not a PLY file".
+    const std::string not_what =
+        format == Mesh_format::ply ? "a PLY file" : asked + " text";
+    what = "This looks like a binary file, not " + not_what + ": " +
+           std::to_string(share.non_text) + " of its first " +
+           std::to_string(share.sample) +
+           " bytes are control bytes or no UTF-8 text. " + detail::formats_read;
+  }
+  Result<Mesh_buffers> named;
+  named.status = Status::error(Status_code::parse_error, what);
+  return named;
+}
+
 /// read_mesh, with or without the fast path (OFF and OBJ).
 Result<Mesh_buffers> read_text(std::string_view text, Mesh_format format,
                                std::vector<std::uint32_t>* corner_halfedges,
@@ -1374,17 +1426,24 @@ Result<Mesh_buffers> read_text(std::string_view text, Mesh_format format,
       r.status = detail::check_not_other_file(text);
       if (!r.ok()) return r;
     }
+    Result<Mesh_buffers> r;
     switch (format) {
       case Mesh_format::off:
-        return read_off(text, corner_halfedges, options, fast);
+        r = read_off(text, corner_halfedges, options, fast);
+        break;
       case Mesh_format::obj:
-        return read_obj(text, corner_halfedges, options, fast);
+        r = read_obj(text, corner_halfedges, options, fast);
+        break;
       case Mesh_format::ply:
-        return detail::read_ply(text, corner_halfedges, options);
+        r = detail::read_ply(text, corner_halfedges, options);
+        break;
       case Mesh_format::stl:
-        return detail::read_stl(text, corner_halfedges, options);
+        r = detail::read_stl(text, corner_halfedges, options);
+        break;
+      default:
+        return parse_failure(0, "unknown mesh format");
     }
-    return parse_failure(0, "unknown mesh format");
+    return name_misread_file(std::move(r), text, format);
   } catch (const std::bad_alloc&) {
     Result<Mesh_buffers> r;
     r.status = Status::error(Status_code::too_large,
