@@ -14,8 +14,8 @@
  * a rotation (the rectangle is the rotated box's bounds); MouseEvent
  * offsetX under CSS `zoom` (Chromium 156 gives it in zoomed pixels), and
  * it maps only events, not points back to the screen. A perspective
- * (3D) transform is not affine: there the map is the plane through the
- * three corners.
+ * (3D) transform is not affine: under one the map is only the affine map
+ * through the three corners, near but not exact away from them.
  */
 
 /** A point: x from the left, y from the top. */
