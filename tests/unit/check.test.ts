@@ -91,6 +91,9 @@ describe('subdiv check', () => {
     expect(report.verdict).toBe('mismatch');
     expect(report.reasons).toEqual([`1 vertex of ${n} is farther from the reference than the tolerance`]);
     expect(report.worst[0].vertex).toBe(30);
+    // After "OFF" and the counts, one vertex a line: vertex 30 on line 33.
+    expect(report.worst[0].line).toBe(33);
+    expect(report.worst[0].objVertex).toBeUndefined();
     expect(report.worst[0].error).toBeCloseTo(0.05, 12);
     expect(report.worst[0].got[0] - report.worst[0].expected[0]).toBeCloseTo(0.05, 12);
   });

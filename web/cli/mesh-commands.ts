@@ -20,6 +20,7 @@ import {
   viewMesh,
 } from '../core/subdiv-core';
 import { SubdivError } from '../core/subdiv-error';
+import { vertexSources } from '../core/vertex-lines';
 import type { CliArgs } from './cli-args';
 import {
   type CliIo,
@@ -165,6 +166,13 @@ export async function check(args: CliArgs, io: CliIo, rules: RuleSet | undefined
   }
   const c = compareMeshes(reference, result, args.tolerance);
   const at = (mesh: Mesh, v: number) => Array.from(mesh.positions.subarray(3 * v, 3 * v + 3));
+  // Where each worst vertex is in RESULT: its line, and in OBJ its 1-based "v" number (core/vertex-lines.ts).
+  const sources = vertexSources(resultText, inputFormat(args.result));
+  const inFile = (v: number) => {
+    const s = sources?.vertices.length === result.positions.length / 3 ? sources.vertices[v] : undefined;
+    if (!s) return {};
+    return sources?.format === 'obj' ? { line: s.line, objVertex: s.fileVertex + 1 } : { line: s.line };
+  };
   const report = {
     verdict: c.match ? 'match' : 'mismatch',
     scheme: args.scheme,
@@ -180,6 +188,7 @@ export async function check(args: CliArgs, io: CliIo, rules: RuleSet | undefined
     meanError: c.meanError,
     worst: c.worst.map((w) => ({
       vertex: w.vertex,
+      ...inFile(w.vertex),
       error: w.error,
       expected: at(reference, w.reference),
       got: at(result, w.vertex),
