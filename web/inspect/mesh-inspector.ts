@@ -126,6 +126,7 @@ export class MeshInspector {
     const level = viewer.state.level;
     const id = viewer.levelId();
     const faces = viewer.controlMesh?.faceIndices ?? null;
+    let again = false;
     this.busy = true;
     this.message = '';
     this.emit();
@@ -138,7 +139,13 @@ export class MeshInspector {
       const wanted = { ...this.choices };
       for (const key of Object.keys(wanted) as (keyof InspectChoices)[]) wanted[key] &&= kept?.[key] === undefined;
       const result = await viewer.inspect(level, { ...wanted, maxPairs: LISTED_PAIRS });
-      if (result && viewer.levelId(level) === id) this.results.set(id, { ...kept, ...result });
+      if (result && viewer.levelId(level) === id) {
+        const merged = { ...kept, ...result };
+        this.results.set(id, merged);
+        // A box ticked meanwhile: its figure next.
+        if (Object.entries(this.choices).some(([key, on]) => on && merged[key as keyof InspectChoices] === undefined))
+          again = true;
+      }
     } catch (error) {
       if (error instanceof CancelledError) {
         this.active = false;
@@ -153,6 +160,7 @@ export class MeshInspector {
       if (frame && viewer.levelId() === id && this.results.has(id)) this.frameShown();
       this.emit();
     }
+    if (again) await this.inspect(frame);
   }
 
   /**
