@@ -102,9 +102,11 @@ export class ClientMapping {
 
   /** The client positions of the element's top left (`origin`) and its top and left edges (`ex`, `ey`, vectors). */
   private frame(): { origin: Point; ex: Point; ey: Point } {
-    // Put back if a page or a panel emptied the element; the probes are placed in its box.
-    for (const probe of this.probes) if (probe.parentNode !== this.element) this.element.append(probe);
-    if (getComputedStyle(this.element).position === 'static') this.element.style.position = 'relative';
+    // Placed first here (and put back if a page or a panel emptied the element), in its box.
+    if (this.probes.some((probe) => probe.parentNode !== this.element)) {
+      this.element.append(...this.probes);
+      if (getComputedStyle(this.element).position === 'static') this.element.style.position = 'relative';
+    }
     const [o, x, y] = this.probes.map((p) => p.getBoundingClientRect());
     return {
       origin: { x: o.left, y: o.top },
