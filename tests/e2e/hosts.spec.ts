@@ -56,6 +56,12 @@ async function startHost(options: { cors: boolean; pages?: Record<string, string
     const path = decodeURIComponent(new URL(request.url ?? '/', 'http://host').pathname);
     const page = options.pages?.[path];
     const headers: Record<string, string> = options.cors ? { 'access-control-allow-origin': '*' } : {};
+    if (path === '/favicon.ico') {
+      // Asked by every page; no icon, no 404 in the console.
+      response.writeHead(204, headers);
+      response.end();
+      return;
+    }
     let body: Buffer;
     try {
       if (page !== undefined) body = Buffer.from(page);
@@ -113,9 +119,11 @@ async function waitForLevelIn(frame: Frame | Page, id: string, level: number) {
 
 test.describe('a sandboxed frame', () => {
   test('sandbox="allow-scripts" (origin null): the element from the hosted copy reaches level 2; its worker is a classic blob: shim', async ({
-    page,
+    embed,
     baseURL,
   }) => {
+    // Through the embed fixture: a console error fails the test (fixtures.ts).
+    const page = embed.page;
     const host = new URL(baseURL ?? 'http://127.0.0.1:4179/').origin;
     const inside = `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Frame</title>
 <script defer src="${host}/embed/subdiv-viewer.js"></script></head><body style="margin:0">
@@ -151,14 +159,60 @@ test.describe('a sandboxed frame', () => {
   });
 });
 
+test.describe('the iframe route in a sandboxed frame', () => {
+  test('<iframe sandbox="allow-scripts" src=".../embed.html?..."> (origin null) posts level 2 with the right counts', async ({
+    embed,
+    baseURL,
+  }) => {
+    // Through the embed fixture: a console error fails the test (fixtures.ts).
+    const page = embed.page;
+    const host = new URL(baseURL ?? 'http://127.0.0.1:4179/').origin;
+    const course = await startHost({
+      cors: false,
+      pages: {
+        '/lesson.html': `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Lesson</title></head><body>
+<iframe id="route" title="viewer" sandbox="allow-scripts" width="400" height="280"
+  src="${host}/embed.html?src=meshes/tetrahedron.off&amp;scheme=loop&amp;levels=2&amp;mode=edges"></iframe>
+<script>
+  window.__changes = [];
+  window.addEventListener('message', (e) => {
+    if (e.data && e.data.subdivlab === 'level-change') window.__changes.push(e.data);
+    if (e.data && e.data.subdivlab === 'error') window.__changes.push(e.data);
+  });
+</script>
+</body></html>`,
+      },
+    });
+    try {
+      await page.goto(`${course.origin}/lesson.html`);
+      const frame = page.frame({ url: /embed\.html/ });
+      if (!frame) throw new Error('no frame');
+      expect(await frame.evaluate(() => self.origin)).toBe('null');
+      await expect
+        .poll(() =>
+          page.evaluate(() => (window as unknown as { __changes: { level?: number }[] }).__changes.at(-1) ?? null),
+        )
+        .toMatchObject({ subdivlab: 'level-change', level: 2 });
+      const last = await page.evaluate(
+        () => (window as unknown as { __changes: { facts: Record<string, number> }[] }).__changes.at(-1)?.facts,
+      );
+      expect(last).toMatchObject({ ...expectedClosedCounts('loop', TETRAHEDRON, 2) });
+      await page.locator('#route').screenshot({ path: `${SHOTS}/sandboxed-iframe-route.png` });
+    } finally {
+      await course.close();
+    }
+  });
+});
+
 test.describe('a host without CORS headers', () => {
   // The browser says in the console that it refused the module; the page says it in the box.
   // One pattern: test.use reads a second array item as the option's settings.
   test.use({ allowedConsoleErrors: [/blocked by CORS policy|^Failed to load resource: net::ERR_FAILED$/] });
 
   test('each element shows a box naming Access-Control-Allow-Origin and the iframe route, which works there', async ({
-    page,
+    embed,
   }) => {
+    const page = embed.page;
     const files = await startHost({ cors: false });
     const body = `<h1>Lesson</h1><p>Loop, two steps.</p>
 <subdiv-viewer id="a" src="${files.origin}/meshes/tetrahedron.off" scheme="loop" levels="2" render-mode="edges" style="width:420px;height:300px"></subdiv-viewer>
@@ -229,7 +283,9 @@ test.describe('a host without CORS headers', () => {
       await test.step('"Show it here" puts the iframe route in the box\'s place: level 2 with the right counts', async () => {
         await page.locator('#a').locator('[part="show-iframe"]').click();
         await expect(page.locator('#a').locator('[part="message"]')).toHaveCount(0);
-        const frame = page.frame({ url: route });
+        // The frame is attached on the click and navigates after it.
+        await expect.poll(() => page.frames().some((f) => f.url() === route)).toBe(true);
+        const frame = page.frames().find((f) => f.url() === route);
         if (!frame) throw new Error('no iframe of the route');
         const reading = await readingInRoute(frame);
         expect(reading.facts).toMatchObject({ ...expectedClosedCounts('loop', TETRAHEDRON, 2) });
@@ -261,7 +317,8 @@ async function readingInRoute(page: Frame) {
   });
 }
 
-test('an element and an iframe of embed.html on one page fetch three.js once', async ({ page }) => {
+test('an element and an iframe of embed.html on one page fetch three.js once', async ({ embed }) => {
+  const page = embed.page;
   // A host with CORS, as a public one; HTTP caching on (page.route would turn the browser's cache off).
   const host = await startHost({ cors: true });
   const course = await startHost({

@@ -4,7 +4,8 @@
  * writes it into the app's pages at build time; the example page carries it
  * as written). No inline script or style; WebAssembly compiles
  * ('wasm-unsafe-eval', the core's module is compiled on the page); the core's
- * worker comes from the site; `?src=` may fetch a mesh from any https host
+ * worker comes from the site (or a blob: of the page that imports it, in a
+ * sandboxed frame); `?src=` may fetch a mesh from any https host
  * (as well as the site itself), nothing else is fetched; pictures and Copy
  * image use data: and blob: images.
  */
@@ -14,7 +15,9 @@ export const CONTENT_SECURITY_POLICY = [
   "style-src 'self'",
   "img-src 'self' data: blob:",
   "connect-src 'self' https:",
-  "worker-src 'self'",
+  // blob: for the iframe route in a frame with sandbox="allow-scripts": its origin is opaque, so
+  // the worker starts from a blob: of the page (worker-client.ts), which 'self' does not cover.
+  "worker-src 'self' blob:",
   "object-src 'none'",
   "base-uri 'self'",
   "form-action 'none'",
