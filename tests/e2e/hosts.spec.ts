@@ -317,6 +317,40 @@ async function readingInRoute(page: Frame) {
   });
 }
 
+test.describe('a copy of embed/ without its assets', () => {
+  test.use({ allowedConsoleErrors: [/^Failed to load resource: the server responded with a status of 404/] });
+
+  test('the box says the module is not there (HTTP 404) and to copy the whole folder', async ({ embed, page }) => {
+    await page.route(/\/embed\/assets\/subdiv-viewer-[\w-]{8}\.js$/, (route) =>
+      route.fulfill({ status: 404, body: '' }),
+    );
+    await embed.serve(
+      'e2e/no-assets.html',
+      viewerPage(
+        'No assets',
+        'subdiv-viewer{width:420px;height:240px}',
+        '<subdiv-viewer id="x" src="../meshes/tetrahedron.off"></subdiv-viewer>',
+      ).replace('<script type="module" src=', '<script defer src='),
+    );
+    await page.goto('./e2e/no-assets.html');
+    const box = page.locator('#x').locator('[part="message"]');
+    await expect(box).toBeVisible();
+    await expect(box).toContainText(
+      /The SubdivLab module http:\/\/127\.0\.0\.1:\d+\/embed\/assets\/subdiv-viewer-[\w-]{8}\.js is not there \(HTTP 404\)\./,
+    );
+    await expect(box).toContainText(
+      'Copy the whole embed/ folder of the build (subdiv-viewer.js and assets/) next to the page.',
+    );
+    await expect(box).not.toContainText('CORS headers');
+    const errors = await embed.events('error', 'x');
+    expect(errors).toHaveLength(1);
+    expect(errors[0].detail).toMatchObject({ code: 'load_error', line: 0 });
+    expect(errors[0].detail.message).toMatch(/could not be loaded: HTTP 404\.$/);
+    await page.emulateMedia({ colorScheme: 'dark' });
+    await page.locator('#x').screenshot({ path: `${SHOTS}/box-404-dark.png` });
+  });
+});
+
 test('an element and an iframe of embed.html on one page fetch three.js once', async ({ embed }) => {
   const page = embed.page;
   // A host with CORS, as a public one; HTTP caching on (page.route would turn the browser's cache off).

@@ -200,6 +200,7 @@ iframe { position: absolute; inset: 0; width: 100%; height: 100%; border: 0; }
 @media (prefers-color-scheme: dark) {
   .box { background: #431407; color: #ffedd5; }
   a { color: #fdba74; }
+  button { background: #7c2d12; border-color: #fdba74; }
 }`;
 
   /** A constructed sheet, which a page's Content-Security-Policy allows without 'unsafe-inline'. */
