@@ -71,10 +71,11 @@ function measure(folder, path) {
 /** A built name with its content hash as `*` (assets/subdivlab-BdhYv3zc.wasm → assets/subdivlab-*.wasm). */
 const pattern = (path) => path.replace(/-[A-Za-z0-9_-]{8}(\.(?:js|mjs|css|wasm))$/, '-*$1');
 
-/** Sizes as the README writes them: kB (1,000 bytes) below 1 MB, else MB with two decimals. */
+/** Sizes as the README writes them: bytes below 1 kB, kB (1,000 bytes) below 1 MB, else MB with two decimals. */
 function formatSize(bytes) {
   if (bytes >= 1_000_000) return `${(bytes / 1_000_000).toFixed(2)} MB`;
-  return `${Math.max(1, Math.round(bytes / 1000))} kB`;
+  if (bytes >= 1000) return `${Math.round(bytes / 1000)} kB`;
+  return `${bytes} B`;
 }
 
 /** What each kind of built file is, by the name Vite gives it; `fetches` are the files it names. */
@@ -86,6 +87,7 @@ function roleOf(path, sharedBy, fetches) {
       : 'element, viewer, three.js';
   }
   if (name.startsWith('subdiv-viewer-element-')) return 'element, viewer, three.js';
+  if (/^subdiv-viewer-[A-Za-z0-9_-]{8}\.js$/.test(name)) return 'the module that defines `<subdiv-viewer>`';
   if (name === 'iframe-route.js') return "`embed.html`'s script";
   if (name.startsWith('subdiv-worker-')) return 'worker + Emscripten glue';
   if (name.endsWith('.wasm')) return 'CGAL core';

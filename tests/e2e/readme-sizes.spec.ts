@@ -29,11 +29,11 @@ interface SizeRow extends Size {
   file: string | null;
 }
 
-/** "735 kB" → 735,000 bytes, "2.03 MB" → 2,030,000 (the README's kB and MB are 1,000 and 1,000,000 bytes). */
+/** "167 B", "735 kB" → 735,000 bytes, "2.03 MB" → 2,030,000 (the README's kB and MB are 1,000 and 1,000,000 bytes). */
 function bytes(text: string): number {
-  const match = text.trim().match(/^([\d.,]+) (kB|MB)$/);
+  const match = text.trim().match(/^([\d.,]+) (B|kB|MB)$/);
   if (!match) throw new Error(`not a size: "${text}"`);
-  return Number(match[1].replace(/,/g, '')) * (match[2] === 'MB' ? 1_000_000 : 1000);
+  return Number(match[1].replace(/,/g, '')) * { B: 1, kB: 1000, MB: 1_000_000 }[match[2] as 'B' | 'kB' | 'MB'];
 }
 
 /** The rows of the README's table between `<!-- sizes:begin name -->` and `<!-- sizes:end -->`. */
