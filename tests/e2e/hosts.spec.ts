@@ -216,7 +216,7 @@ test.describe('a host without CORS headers', () => {
     const files = await startHost({ cors: false });
     const body = `<h1>Lesson</h1><p>Loop, two steps.</p>
 <subdiv-viewer id="a" src="${files.origin}/meshes/tetrahedron.off" scheme="loop" levels="2" render-mode="edges" style="width:420px;height:300px"></subdiv-viewer>
-<subdiv-viewer id="b" src="cube.off" beside="loop sqrt3" style="width:420px;height:200px"></subdiv-viewer>
+<subdiv-viewer id="b" src="cube.off" beside="loop sqrt3" rules="rules/mine.json" style="width:420px;height:200px"></subdiv-viewer>
 <script>
   window.__errors = [];
   document.addEventListener('error', (e) => {
@@ -275,9 +275,11 @@ test.describe('a host without CORS headers', () => {
           mode: 'edges',
         });
         const other = new URL((await page.locator('#b').locator('[part="message"] a').getAttribute('href')) ?? '');
+        // Both URLs relative to the lesson, as the element would read them, not to embed.html.
         expect(Object.fromEntries(other.searchParams)).toEqual({
           src: `${course.origin}/cube.off`,
           beside: 'loop,sqrt3',
+          rules: `${course.origin}/rules/mine.json`,
         });
       });
       await test.step('"Show it here" puts the iframe route in the box\'s place: level 2 with the right counts', async () => {
@@ -294,6 +296,57 @@ test.describe('a host without CORS headers', () => {
         expect(rect).toMatchObject({ width: 420, height: 300 });
         await page.screenshot({ path: `${SHOTS}/no-cors-iframe-route.png` });
       });
+    } finally {
+      await files.close();
+      await course.close();
+    }
+  });
+});
+
+test.describe('the iframe route in a sandboxed frame on a host without CORS', () => {
+  test.use({ allowedConsoleErrors: [/blocked by CORS policy|^Failed to load resource: net::ERR_FAILED$/] });
+
+  test('the frame shows the box (CORS, or allow-same-origin) and posts the error to the page', async ({ embed }) => {
+    const page = embed.page;
+    const files = await startHost({ cors: false });
+    const course = await startHost({
+      cors: false,
+      pages: {
+        '/lesson.html': `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Lesson</title></head><body>
+<iframe id="route" title="viewer" sandbox="allow-scripts" width="480" height="300"
+  src="${files.origin}/embed.html?src=meshes/tetrahedron.off&amp;scheme=loop&amp;levels=2"></iframe>
+<script>
+  window.__messages = [];
+  window.addEventListener('message', (e) => { if (e.data && e.data.subdivlab) window.__messages.push(e.data); });
+</script>
+</body></html>`,
+      },
+    });
+    try {
+      await page.goto(`${course.origin}/lesson.html`);
+      const frame = page.frame({ url: /embed\.html/ });
+      if (!frame) throw new Error('no frame');
+      const box = frame.locator('subdiv-viewer').locator('[part="message"]');
+      await expect(box).toBeVisible();
+      await expect(box).toContainText(`${files.origin} does not send CORS headers`);
+      await expect(box).toContainText('Access-Control-Allow-Origin: * (or this sandboxed frame (origin null))');
+      await expect(box).toContainText('Adding allow-same-origin to the frame');
+      // Inside the route there is no route to offer.
+      await expect(box.locator('[part="show-iframe"]')).toHaveCount(0);
+      // The box fills the frame.
+      expect(await frame.locator('subdiv-viewer').boundingBox()).toMatchObject({ width: 480, height: 300 });
+      await expect
+        .poll(() => page.evaluate(() => (window as unknown as { __messages: unknown[] }).__messages))
+        .toEqual([
+          {
+            subdivlab: 'error',
+            code: 'load_error',
+            line: 0,
+            source: `${files.origin}/embed/iframe-route.js`,
+            message: expect.stringMatching(/sends no CORS headers \(Access-Control-Allow-Origin\)/),
+          },
+        ]);
+      await page.locator('#route').screenshot({ path: `${SHOTS}/sandboxed-route-no-cors.png` });
     } finally {
       await files.close();
       await course.close();

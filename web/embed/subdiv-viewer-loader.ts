@@ -8,6 +8,12 @@
  * (`embed.html`, which needs no CORS) as the way round. Nothing else stays
  * empty: each element shows the box and fires `error`.
  *
+ * embed.html (the iframe route) includes it too, with `data-route`: then it
+ * adds the route's module (iframe-route.js) instead, and where that cannot
+ * run (a frame with `sandbox="allow-scripts"`, whose opaque origin makes
+ * every file a cross-origin one, on a host without CORS) the box fills the
+ * frame and its reason goes to the parent page as an `error` message.
+ *
  * Built by vite.embed.config.ts (classicLoader), which writes the module's
  * file name in place of the marker below; it imports nothing, so that the
  * build only strips its types.
@@ -15,6 +21,8 @@
 (() => {
   /** The element module's path from this script, set by the build. */
   const ELEMENT_MODULE = '__SUBDIVLAB_ELEMENT_MODULE__';
+  /** The iframe route's module, beside this script. */
+  const ROUTE_MODULE = './iframe-route.js';
 
   /** Why the module did not run, as the box and the `error` event say it. */
   interface Unavailable {
@@ -25,8 +33,10 @@
   }
 
   const current = document.currentScript instanceof HTMLScriptElement ? document.currentScript : null;
+  /** In embed.html: the page is one viewer, made by the route's module. */
+  const route = current?.hasAttribute('data-route') ?? false;
   const scriptUrl = ownUrl();
-  const moduleUrl = new URL(ELEMENT_MODULE, scriptUrl).href;
+  const moduleUrl = new URL(route ? ROUTE_MODULE : ELEMENT_MODULE, scriptUrl).href;
   // A module script element rather than import(): while it loads it holds the page's load
   // event, so the element is defined by then, as when pages included the module itself.
   const module = document.createElement('script');
@@ -41,7 +51,24 @@
   async function unavailable(said: string): Promise<void> {
     if (customElements.get('subdiv-viewer')) return;
     const why = await diagnose(moduleUrl, said);
-    if (!customElements.get('subdiv-viewer')) customElements.define('subdiv-viewer', unavailableElement(why));
+    if (customElements.get('subdiv-viewer')) return;
+    customElements.define('subdiv-viewer', unavailableElement(why));
+    if (route) showInRoute();
+  }
+
+  /** The iframe route's page as the box, its reason posted to the parent as the route posts errors. */
+  function showInRoute(): void {
+    const box = document.createElement('subdiv-viewer');
+    // Styled here, as the site's policy refuses inline styles (as iframe-route.ts does).
+    for (const element of [document.documentElement, document.body])
+      element.style.cssText = 'margin:0;height:100%;overflow:hidden';
+    box.style.cssText = 'position:fixed;inset:0;width:100%;height:auto;border-radius:0';
+    box.addEventListener('error', (event) => {
+      if (window.parent === window) return;
+      const detail = (event as unknown as CustomEvent<Record<string, unknown>>).detail;
+      window.parent.postMessage({ subdivlab: 'error', ...detail }, '*');
+    });
+    document.body.append(box);
   }
 
   /**
@@ -91,12 +118,21 @@
           message: `The SubdivLab module ${url} could not be loaded: ${said}`,
         };
       }
-      const who = self.origin === 'null' ? 'this sandboxed frame (origin null)' : self.origin;
+      const sandboxed = self.origin === 'null';
+      const who = sandboxed ? 'this sandboxed frame (origin null)' : self.origin;
+      const lines = [
+        `${host} does not send CORS headers, so the browser will not run SubdivLab's module on this page.`,
+        `The host must send Access-Control-Allow-Origin: * (or ${who}) with the files under ${new URL('.', scriptUrl).pathname}.`,
+      ];
+      // Same origin, no CORS: in embed.html, a frame that keeps its origin loads the route from its own host.
+      if (sandboxed && route) {
+        lines.push(
+          'This page is in a frame with sandbox="allow-scripts", whose origin is opaque, so every file comes from another origin. ' +
+            "Adding allow-same-origin to the frame's sandbox gives it its own origin back, which needs no CORS.",
+        );
+      }
       return {
-        lines: [
-          `${host} does not send CORS headers, so the browser will not run SubdivLab's module on this page.`,
-          `The host must send Access-Control-Allow-Origin: * (or ${who}) with the files under ${new URL('.', scriptUrl).pathname}.`,
-        ],
+        lines,
         message:
           `${host} sends no CORS headers (Access-Control-Allow-Origin), so the module ${url} cannot run on this page; ` +
           'the iframe route (embed.html) needs none.',
@@ -130,30 +166,9 @@
           p.textContent = line;
           box.append(p);
         }
-        const route = iframeRoute(this);
-        const p = document.createElement('p');
-        const link = document.createElement('a');
-        link.href = route;
-        link.target = '_blank';
-        link.rel = 'noopener';
-        link.textContent = `embed.html${decodeURIComponent(new URL(route).search)}`;
-        p.append('Or use the iframe route, which needs no CORS: ', link, '. ');
-        const show = document.createElement('button');
-        show.type = 'button';
-        show.setAttribute('part', 'show-iframe');
-        show.textContent = 'Show it here';
-        // The student sees the model now; the box comes back when the page is loaded again.
-        show.addEventListener('click', () => {
-          const frame = document.createElement('iframe');
-          frame.src = route;
-          frame.title = this.getAttribute('alt') ?? 'SubdivLab viewer';
-          frame.setAttribute('part', 'iframe');
-          box.replaceWith(frame);
-        });
-        p.append(show);
-        box.append(p);
         appendStyles(root);
         root.append(box);
+        if (!route) box.append(routeParagraph(this, box));
         this.dispatchEvent(
           new CustomEvent('error', {
             detail: { code: 'load_error', message: unavailable.message, line: 0, source: moduleUrl },
@@ -165,13 +180,42 @@
     };
   }
 
+  /** The iframe route with `element`'s settings, as a link and a button that puts it in `box`'s place. */
+  function routeParagraph(element: HTMLElement, box: HTMLElement): HTMLElement {
+    const href = iframeRoute(element);
+    const p = document.createElement('p');
+    const link = document.createElement('a');
+    link.href = href;
+    link.target = '_blank';
+    link.rel = 'noopener';
+    // The query as a teacher would type it: values decoded, spaces as spaces.
+    const query = [...new URL(href).searchParams].map(([key, value]) => `${key}=${value}`).join('&');
+    link.textContent = `embed.html?${query}`;
+    p.append('Or use the iframe route, which needs no CORS: ', link, '. ');
+    const show = document.createElement('button');
+    show.type = 'button';
+    show.setAttribute('part', 'show-iframe');
+    show.textContent = 'Show it here';
+    // The student sees the model now; the box comes back when the page is loaded again.
+    show.addEventListener('click', () => {
+      const frame = document.createElement('iframe');
+      frame.src = href;
+      frame.title = element.getAttribute('alt') ?? 'SubdivLab viewer';
+      frame.setAttribute('part', 'iframe');
+      box.replaceWith(frame);
+    });
+    p.append(show);
+    return p;
+  }
+
   /** embed.html beside embed/, with the element's attributes as its query (names as in the share link). */
   function iframeRoute(element: HTMLElement): string {
     const url = new URL('../embed.html', scriptUrl);
     const keys: Record<string, string> = { 'render-mode': 'mode', 'line-width': 'lines' };
     for (const { name, value } of Array.from(element.attributes)) {
       if (name === 'id' || name === 'class' || name === 'style' || name === 'tabindex') continue;
-      if (name === 'src') url.searchParams.set('src', new URL(value, document.baseURI).href);
+      // URLs relative to the page, which the route would read relative to its own.
+      if (name === 'src' || name === 'rules') url.searchParams.set(name, new URL(value, document.baseURI).href);
       else if (name === 'beside')
         url.searchParams.set(
           'beside',
