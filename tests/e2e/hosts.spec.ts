@@ -402,6 +402,31 @@ test.describe('a copy of embed/ without its assets', () => {
     await page.emulateMedia({ colorScheme: 'dark' });
     await page.locator('#x').screenshot({ path: `${SHOTS}/box-404-dark.png` });
   });
+
+  test('the module there but the chunk it imports missing: the box names the files it imports, not only a policy', async ({
+    embed,
+    page,
+  }) => {
+    await page.route(/\/embed\/assets\/subdiv-viewer-element-[\w-]{8}\.js$/, (route) =>
+      route.fulfill({ status: 404, body: '' }),
+    );
+    await embed.serve(
+      'e2e/no-chunk.html',
+      viewerPage(
+        'No chunk',
+        'subdiv-viewer{width:420px;height:240px}',
+        '<subdiv-viewer id="x" src="../meshes/tetrahedron.off"></subdiv-viewer>',
+      ).replace('<script type="module" src=', '<script defer src='),
+    );
+    await page.goto('./e2e/no-chunk.html');
+    const box = page.locator('#x').locator('[part="message"]');
+    await expect(box).toBeVisible();
+    await expect(box).toContainText(/did not run on this page: the browser did not load it\./);
+    await expect(box).toContainText(
+      /Check that the files it imports are there too \(http:\/\/127\.0\.0\.1:\d+\/embed\/assets\/: copy the whole embed\/ folder\)/,
+    );
+    await expect(box).not.toContainText('CORS headers');
+  });
 });
 
 test('an element and an iframe of embed.html on one page fetch three.js once', async ({ embed }) => {

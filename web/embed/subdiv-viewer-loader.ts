@@ -103,7 +103,8 @@
       return {
         lines: [
           `The SubdivLab module ${url} did not run on this page: ${said}.`,
-          `If the page has a Content-Security-Policy, its script-src must allow ${host}.`,
+          // The module is there; what it imports (assets/) may not be, which this check cannot see.
+          `Check that the files it imports are there too (${new URL('assets/', scriptUrl).href}: copy the whole embed/ folder), and, if the page has a Content-Security-Policy, that its script-src allows ${host}.`,
         ],
         message: `The SubdivLab module ${url} did not run: ${said}.`,
       };
