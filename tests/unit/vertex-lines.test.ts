@@ -130,6 +130,17 @@ describe('OBJ', () => {
     expect(vertexSources(text, 'auto')?.format).toBe('obj');
   });
 
+  it('a face written before the vertices it names: they are used, and keep their lines', () => {
+    const early = ['# faces first', 'f 1 2 3', 'f 1 3 4', 'v 0 0 0', 'v 1 0 0', 'v 0 1 0', 'v 0 0 1', ''].join('\n');
+    expect(vertexSources(early, 'obj')?.vertices).toEqual([
+      { line: 4, fileVertex: 0 },
+      { line: 5, fileVertex: 1 },
+      { line: 6, fileVertex: 2 },
+      { line: 7, fileVertex: 3 },
+    ]);
+    expectLinesHoldTheVertices(early, 'obj');
+  });
+
   it('course.obj (every form at once, CRLF): each line holds its vertex', async () => {
     const { readFileSync } = await import('node:fs');
     const course = readFileSync('tests/fixtures/course.obj', 'utf8');

@@ -88,20 +88,21 @@ function offVertices(lines: readonly string[]): { lines: number[]; used: boolean
 /** The lines of an OBJ file's "v" statements and the vertices its faces use. */
 function objVertices(lines: readonly string[]): { lines: number[]; used: boolean[] } {
   const vertexLines: number[] = [];
-  const used: boolean[] = [];
+  // The vertices faces name, known once every "v" is read: a positive index may name one further down.
+  const named: number[] = [];
   for (const s of statements(lines, true)) {
     if (s.tokens[0] === 'v') {
       vertexLines.push(s.line);
-      used.push(false);
     } else if (s.tokens[0] === 'f') {
       for (const corner of s.tokens.slice(1)) {
         const i = Number.parseInt(corner, 10);
         // Negative: counted back from the last vertex so far.
-        const v = i < 0 ? vertexLines.length + i : i - 1;
-        if (v >= 0 && v < used.length) used[v] = true;
+        named.push(i < 0 ? vertexLines.length + i : i - 1);
       }
     }
   }
+  const used = new Array<boolean>(vertexLines.length).fill(false);
+  for (const v of named) if (v >= 0 && v < used.length) used[v] = true;
   return { lines: vertexLines, used };
 }
 
