@@ -389,6 +389,20 @@ TEST(FileKind, BinaryOrOtherFormatIsNamedNotQuoted) {
                   ": 156 of its first 256 bytes are control bytes or "
                   "no UTF-8 text. SubdivLab reads OFF, OBJ, PLY and STL.");
   }
+  // UTF-16 text (Notepad's "Unicode"), with and without a byte-order
+  // mark, little and big endian: text in another encoding, not binary.
+  const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  std::string le, be;
+  for (char c : off) {
+    le += {c, '\0'};
+    be += {'\0', c};
+  }
+  for (const std::string& utf16 : {std::string("\xFF\xFE", 2) + le, le,
+                                   std::string("\xFE\xFF", 2) + be, be})
+    EXPECT_EQ(read_error(utf16, Mesh_format::off, Status_code::parse_error, 0),
+              "This looks like UTF-16 text (what Windows Notepad saves as "
+              "\"Unicode\"), not OFF text in UTF-8 or ASCII: save it again "
+              "as UTF-8 and open that.");
   // Files of another format under this one's extension.
   EXPECT_EQ(read_error(fixture_text("tetrahedron-binary.stl"), Mesh_format::off,
                        Status_code::parse_error, 0),

@@ -72,6 +72,24 @@ bool looks_binary(const Text_share& share) {
   return share.sample > 0 && 10 * share.non_text >= share.sample;
 }
 
+bool looks_utf16(std::string_view bytes) {
+  if (bytes.substr(0, 2) == "\xFF\xFE" || bytes.substr(0, 2) == "\xFE\xFF")
+    return true;
+  const std::size_t pairs = std::min<std::size_t>(bytes.size(), 4096) / 2;
+  if (pairs < 4) return false;
+  const auto ascii = [](unsigned char c) {
+    return c == '\t' || c == '\n' || c == '\r' || (c >= 0x20 && c < 0x7F);
+  };
+  std::size_t little = 0, big = 0;
+  for (std::size_t i = 0; i < pairs; ++i) {
+    const auto a = static_cast<unsigned char>(bytes[2 * i]);
+    const auto b = static_cast<unsigned char>(bytes[2 * i + 1]);
+    little += ascii(a) && b == 0;
+    big += a == 0 && ascii(b);
+  }
+  return 10 * std::max(little, big) >= 9 * pairs;
+}
+
 std::string quoted(std::string_view tok) { return "'" + printable(tok) + "'"; }
 
 std::string printable(std::string_view tok) {

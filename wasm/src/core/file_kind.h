@@ -45,6 +45,12 @@ struct Text_share {
 Text_share text_share(std::string_view bytes);
 bool looks_binary(const Text_share& share);
 
+/// Whether `bytes` is UTF-16 text (as Windows Notepad saves "Unicode"): a
+/// byte-order mark, or, over its first 4 KiB, nine in ten byte pairs an
+/// ASCII character beside a zero byte. Such a file is text in another
+/// encoding, not a binary file, and a message says how to save it.
+bool looks_utf16(std::string_view bytes);
+
 /// The sentence naming the formats read, for messages.
 inline constexpr const char* formats_read =
     "SubdivLab reads OFF, OBJ, PLY and STL.";

@@ -1399,11 +1399,21 @@ Result<Mesh_buffers> name_misread_file(Result<Mesh_buffers>&& r,
     // quote the header.
     if (format == Mesh_format::ply && text.substr(0, 3) == "ply")
       return std::move(r);
-    const detail::Text_share share = detail::text_share(text);
-    if (!detail::looks_binary(share)) return std::move(r);
     // PLY may be binary after its header: "not a PLY file".
     const std::string not_what =
         format == Mesh_format::ply ? "a PLY file" : asked + " text";
+    if (detail::looks_utf16(text)) {
+      what =
+          "This looks like UTF-16 text (what Windows Notepad saves as "
+          "\"Unicode\"), not " +
+          not_what +
+          " in UTF-8 or ASCII: save it again as UTF-8 and open that.";
+      Result<Mesh_buffers> named;
+      named.status = Status::error(Status_code::parse_error, what);
+      return named;
+    }
+    const detail::Text_share share = detail::text_share(text);
+    if (!detail::looks_binary(share)) return std::move(r);
     what = "This looks like a binary file, not " + not_what + ": " +
            std::to_string(share.non_text) + " of its first " +
            std::to_string(share.sample) +
