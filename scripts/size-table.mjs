@@ -31,16 +31,24 @@ function builtFiles(dir) {
 
 /**
  * What a page fetches from `folder`, starting from `entries` (paths relative to it), in the order met:
- * a built file is fetched when a fetched file names it by its path relative to that file's folder.
+ * a built file is fetched when a fetched file names it by its path relative to that file's folder. One
+ * file names two it picks between: the element's loader (subdiv-viewer.js, web/embed/subdiv-viewer-loader.ts)
+ * adds iframe-route.js when its script tag has `data-route` (embed.html), else the element's module.
  */
-function fetchedFrom(folder, entries, candidates) {
+function fetchedFrom(folder, entries, candidates, route = false) {
   const fetched = [];
   const queue = [...entries];
   while (queue.length > 0) {
     const path = queue.shift();
     if (fetched.includes(path)) continue;
     fetched.push(path);
-    for (const other of names(folder, path, candidates)) if (!fetched.includes(other)) queue.push(other);
+    let named = names(folder, path, candidates);
+    if (basename(path) === 'subdiv-viewer.js') {
+      named = named.filter((other) =>
+        route ? !/^subdiv-viewer-[A-Za-z0-9_-]{8}\.js$/.test(basename(other)) : basename(other) !== 'iframe-route.js',
+      );
+    }
+    for (const other of named) if (!fetched.includes(other)) queue.push(other);
   }
   return fetched;
 }
@@ -52,13 +60,19 @@ function names(folder, path, candidates) {
   return candidates.filter((other) => other !== path && text.includes(posix.relative(posix.dirname(path), other)));
 }
 
-/** The files an HTML page loads itself: module scripts, modulepreloads, stylesheets (relative to `folder`). */
+/**
+ * The files an HTML page loads itself (scripts, modulepreloads, stylesheets; relative to `folder`),
+ * and whether a script of it has `data-route` (embed.html's loader).
+ */
 function pageEntries(folder, page) {
   const html = readFileSync(join(folder, page), 'utf8');
-  const links = [...html.matchAll(/<(?:script|link)\b[^>]*\b(?:src|href)="([^"]+)"[^>]*>/g)]
-    .filter(([tag]) => /<script\b|rel="(?:modulepreload|stylesheet)"/.test(tag))
-    .map(([, url]) => url.replace(/^\.\//, ''));
-  return links.filter((path) => !/^[a-z]+:/.test(path));
+  const tags = [...html.matchAll(/<(?:script|link)\b[^>]*\b(?:src|href)="([^"]+)"[^>]*>/g)].filter(([tag]) =>
+    /<script\b|rel="(?:modulepreload|stylesheet)"/.test(tag),
+  );
+  return {
+    entries: tags.map(([, url]) => url.replace(/^\.\//, '')).filter((path) => !/^[a-z]+:/.test(path)),
+    route: tags.some(([tag]) => /<script\b[^>]*\sdata-route\b/.test(tag)),
+  };
 }
 
 const gzipped = (bytes) => gzipSync(bytes, { level: 9 }).length;
@@ -105,11 +119,11 @@ function row(label, size) {
 const total = (sizes) => sizes.reduce((a, b) => ({ raw: a.raw + b.raw, gzip: a.gzip + b.gzip }), { raw: 0, gzip: 0 });
 
 /**
- * A table of what `pages` fetch from `folder` (each `{ name, entries, label }`): a row per file
+ * A table of what `pages` fetch from `folder` (each `{ name, entries, route, label }`): a row per file
  * (first met first), then a row per page with what it fetches in all.
  */
 function table(folder, candidates, pages) {
-  const perPage = pages.map((page) => ({ ...page, files: fetchedFrom(folder, page.entries, candidates) }));
+  const perPage = pages.map((page) => ({ ...page, files: fetchedFrom(folder, page.entries, candidates, page.route) }));
   const files = [...new Set(perPage.flatMap((page) => page.files))];
   const lines = ['| file | size | gzip |', '|---|---:|---:|'];
   for (const path of files) {
@@ -126,7 +140,7 @@ const appTable = table(
   builtFiles(dist),
   ['index.html', 'embed.html'].map((name) => ({
     name,
-    entries: pageEntries(dist, name),
+    ...pageEntries(dist, name),
     label: `**${name === 'index.html' ? 'the app' : 'the iframe route'} (\`${name}\`) fetches in all**`,
   })),
 );
