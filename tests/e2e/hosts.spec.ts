@@ -11,7 +11,7 @@ import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { extname, join, normalize, resolve } from 'node:path';
 import type { Frame, Page } from '@playwright/test';
-import { viewerPage } from './embed-page';
+import { type EmbedPage, viewerPage } from './embed-page';
 import { expect, test } from './fixtures';
 import { expectedClosedCounts } from './helpers';
 
@@ -373,28 +373,32 @@ async function readingInRoute(page: Frame) {
 test.describe('a copy of embed/ without its assets', () => {
   test.use({ allowedConsoleErrors: [/^Failed to load resource: the server responded with a status of 404/] });
 
-  test('the box says the module is not there (HTTP 404) and to copy the whole folder', async ({ embed, page }) => {
-    await page.route(/\/embed\/assets\/subdiv-viewer-[\w-]{8}\.js$/, (route) =>
-      route.fulfill({ status: 404, body: '' }),
-    );
+  /** A page with one element (#x) whose files matching `missing` answer 404: its box. */
+  async function boxWithout(embed: EmbedPage, page: Page, missing: RegExp, name: string) {
+    await page.route(missing, (route) => route.fulfill({ status: 404, body: '' }));
     await embed.serve(
-      'e2e/no-assets.html',
+      `e2e/${name}.html`,
       viewerPage(
-        'No assets',
+        name,
         'subdiv-viewer{width:420px;height:240px}',
         '<subdiv-viewer id="x" src="../meshes/tetrahedron.off"></subdiv-viewer>',
       ).replace('<script type="module" src=', '<script defer src='),
     );
-    await page.goto('./e2e/no-assets.html');
+    await page.goto(`./e2e/${name}.html`);
     const box = page.locator('#x').locator('[part="message"]');
     await expect(box).toBeVisible();
+    await expect(box).not.toContainText('CORS headers');
+    return box;
+  }
+
+  test('the box says the module is not there (HTTP 404) and to copy the whole folder', async ({ embed, page }) => {
+    const box = await boxWithout(embed, page, /\/embed\/assets\/subdiv-viewer-[\w-]{8}\.js$/, 'no-assets');
     await expect(box).toContainText(
       /The SubdivLab module http:\/\/127\.0\.0\.1:\d+\/embed\/assets\/subdiv-viewer-[\w-]{8}\.js is not there \(HTTP 404\)\./,
     );
     await expect(box).toContainText(
       'Copy the whole embed/ folder of the build (subdiv-viewer.js and assets/) next to the page.',
     );
-    await expect(box).not.toContainText('CORS headers');
     const errors = await embed.events('error', 'x');
     expect(errors).toHaveLength(1);
     expect(errors[0].detail).toMatchObject({ code: 'load_error', line: 0 });
@@ -407,25 +411,11 @@ test.describe('a copy of embed/ without its assets', () => {
     embed,
     page,
   }) => {
-    await page.route(/\/embed\/assets\/subdiv-viewer-element-[\w-]{8}\.js$/, (route) =>
-      route.fulfill({ status: 404, body: '' }),
-    );
-    await embed.serve(
-      'e2e/no-chunk.html',
-      viewerPage(
-        'No chunk',
-        'subdiv-viewer{width:420px;height:240px}',
-        '<subdiv-viewer id="x" src="../meshes/tetrahedron.off"></subdiv-viewer>',
-      ).replace('<script type="module" src=', '<script defer src='),
-    );
-    await page.goto('./e2e/no-chunk.html');
-    const box = page.locator('#x').locator('[part="message"]');
-    await expect(box).toBeVisible();
+    const box = await boxWithout(embed, page, /\/embed\/assets\/subdiv-viewer-element-[\w-]{8}\.js$/, 'no-chunk');
     await expect(box).toContainText(/did not run on this page: the browser did not load it\./);
     await expect(box).toContainText(
       /Check that the files it imports are there too \(http:\/\/127\.0\.0\.1:\d+\/embed\/assets\/: copy the whole embed\/ folder\)/,
     );
-    await expect(box).not.toContainText('CORS headers');
   });
 });
 
